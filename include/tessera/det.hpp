@@ -1,0 +1,67 @@
+// tessera/det.hpp — discrete element textures: neighbourhood-matching synthesis.
+//
+// Implements Ma, Wei and Tong, "Discrete Element Textures" (SIGGRAPH 2011),
+// sections 3 and 4: the sample neighbourhood metric (Eq. 1), patch-copy
+// initialization (4.1), search by exhaustive scan or k-coherence (4.2),
+// least-squares position assignment (Eq. 3, 4) and attribute voting (Eq. 5),
+// with the domain occupancy term of Eq. 6 for the output boundary.
+#pragma once
+
+#include <cstdint>
+
+#include "tessera/domain.hpp"
+#include "tessera/exemplar.hpp"
+#include "tessera/progress.hpp"
+
+namespace tessera {
+
+enum class Matching { greedy, hungarian };
+enum class SearchMode { kcoherence, exhaustive };
+
+struct DetOptions {
+    // Neighbourhood radius in the exemplar's units; 0 = automatic:
+    // 2 x the exemplar's mean nearest-neighbour distance between elements (about two rings).
+    double radius = 0.0;
+    // Iterations of search + assign (the paper uses 10).
+    int iterations = 10;
+    // Weight of the attribute term alpha|q_o - q_i|^2 of Eq. 1, in squared length
+    // units; negative = automatic: (mean nearest-neighbour distance)^2, so that a
+    // type mismatch costs as much as a neighbour displaced by one spacing.
+    double alpha = -1.0;
+    // Weight lambda of the domain occupancy term of Eq. 6, squared length units;
+    // negative = automatic: (mean nearest-neighbour distance)^2.
+    double lambda = -1.0;
+    // Pairing of neighbourhood samples in Eq. 1: the paper's greedy heuristic or
+    // the exact minimum-cost (Hungarian) assignment.
+    Matching matching = Matching::greedy;
+    // Search: k-coherence (paper, 4.2) or exhaustive scan over every input sample.
+    SearchMode search = SearchMode::kcoherence;
+    // Size k of each input sample's similarity set for k-coherence search.
+    int k = 4;
+    // Side of the square/cubic patches copied at initialization; 0 = automatic:
+    // min(2 x radius, half the exemplar's smallest extent).
+    double patch_size = 0.0;
+    // Random candidate patches tried per output cell at initialization; the one that
+    // agrees best with the elements already placed is copied (quilting-style seams).
+    int patch_candidates = 16;
+    // Worker threads for search and assignment; 0 = all hardware threads.
+    // Results are byte-identical for every value.
+    int threads = 0;
+    // Seed of every random draw (counter-based: results do not depend on threads).
+    std::uint64_t seed = 1;
+};
+
+// Synthesizes an arrangement of elements like `exemplar` filling `domain`.
+// Preconditions: exemplar.validate() passes; domain.dimension() == exemplar.dimension.
+// Throws Error(option) for invalid options, Error(domain) for a domain that cannot
+// hold one element, Cancelled if `progress` returns false.
+Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain,
+                           const DetOptions& options = {}, const Progress& progress = {});
+
+// The automatic neighbourhood radius used when DetOptions::radius == 0.
+double default_radius(const Exemplar& exemplar);
+
+// Mean distance from each element (its centroid) to the nearest other element.
+double mean_nearest_neighbor_distance(const Exemplar& exemplar);
+
+}  // namespace tessera

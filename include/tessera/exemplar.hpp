@@ -1,0 +1,89 @@
+// tessera/exemplar.hpp — the data model shared by every method (DESIGN.md, "Data model").
+//
+// A sample is a point p with attributes q (element, sample id within its element,
+// and through its element: type, radius, orientation, free attributes).
+// An element is an ordered run of samples of one type; an element type names a
+// kind of element and fixes its sample layout. An Exemplar is element types +
+// elements + samples + the domain they were observed in. An Arrangement (the
+// output of a method) is the same plus run statistics.
+//
+// Storage is flat (all samples in one vector, elements refer to a contiguous
+// run) so that neighbour queries and solvers work on plain arrays.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/domain.hpp"
+#include "tessera/vec.hpp"
+
+namespace tessera {
+
+struct Sample {
+    Vec3 p;               // position (z = 0 in 2D)
+    int element = -1;     // index of the owning element in Exemplar::elements
+    int sample_id = 0;    // position of this sample within its element (0-based)
+    double time = 0.0;    // time stamp; 0 for static data (space-time synthesis later)
+};
+
+struct ElementType {
+    std::string name;     // class name, e.g. "tree", "stick"; unique within an exemplar
+    bool rigid = true;    // rigid elements keep the exact shape of an input element
+    bool floor = false;   // floor elements (used by constrained selection, later)
+    std::string mesh;     // optional mesh file (OBJ) for rebuilding geometry, later
+};
+
+struct Element {
+    int type = 0;             // index into Exemplar::types
+    int first_sample = 0;     // samples [first_sample, first_sample + sample_count)
+    int sample_count = 1;
+    double radius = 0.0;      // 0 = no radius
+    Vec3 position;            // pose: centroid of the samples
+    Quat orientation;         // pose: rotation from the element's reference frame
+    double scale = 1.0;       // pose: uniform scale
+    std::vector<double> attributes;  // values of Exemplar::attribute_names, in order
+    std::uint64_t id = 0;     // stable element id (kept through synthesis)
+    bool locked = false;      // locked elements are never moved by a method
+};
+
+struct Exemplar {
+    int dimension = 2;                       // 2 or 3
+    std::vector<ElementType> types;
+    std::vector<Element> elements;
+    std::vector<Sample> samples;
+    std::vector<std::string> attribute_names;  // names of the free numeric attributes
+    Domain domain = Domain::box({0, 0, 0}, {1, 1, 0}, 2);
+
+    // Index of the type with this name, or -1.
+    int find_type(const std::string& name) const;
+    // Index of the type with this name, appended if missing.
+    int type_index(const std::string& name);
+    // Appends an element made of `positions` (sample ids 0..n-1) and returns its index.
+    int add_element(int type, const std::vector<Vec3>& positions, double radius = 0.0);
+    // Recomputes each element's position (centroid) from its samples.
+    void update_positions();
+    // True when some element has more than one sample.
+    bool has_multi_sample_elements() const;
+    // Throws Error(input) naming `source` if the data break the model's invariants:
+    // no elements, non-finite coordinates, bad indices, radius < 0, unknown types,
+    // elements of one type with different sample counts.
+    void validate(const std::string& source) const;
+};
+
+// Statistics a method reports about its run.
+struct RunStats {
+    std::string method;                  // "det", ...
+    std::vector<double> energy;          // energy after each iteration (Eq. 2)
+    std::vector<double> iteration_seconds;
+    double init_seconds = 0.0;
+    double total_seconds = 0.0;
+    int threads = 1;
+    std::uint64_t seed = 0;
+};
+
+struct Arrangement : Exemplar {
+    RunStats stats;
+};
+
+}  // namespace tessera

@@ -1,0 +1,21 @@
+// tessera/progress.hpp — how long runs report progress and accept cancellation.
+// The library never prints; it calls this (from the calling thread only, at
+// iteration boundaries). Returning false cancels: the method throws Cancelled.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace tessera {
+
+struct ProgressEvent {
+    std::string stage;       // "init", "search", "assign", "done", ...
+    int iteration = 0;       // 0-based iteration index; -1 outside the iterations
+    int iterations = 0;      // total iterations planned
+    double energy = 0.0;     // current energy (Eq. 2), 0 when not known yet
+    double elapsed_s = 0.0;  // seconds since the method started
+};
+
+using Progress = std::function<bool(const ProgressEvent&)>;
+
+}  // namespace tessera

@@ -1,0 +1,13 @@
+// tessera/tessera.hpp — umbrella header: the whole public API.
+#pragma once
+
+#include "tessera/det.hpp"
+#include "tessera/domain.hpp"
+#include "tessera/error.hpp"
+#include "tessera/exemplar.hpp"
+#include "tessera/io.hpp"
+#include "tessera/metrics.hpp"
+#include "tessera/progress.hpp"
+#include "tessera/render.hpp"
+#include "tessera/vec.hpp"
+#include "tessera/version.hpp"
