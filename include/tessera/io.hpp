@@ -17,8 +17,7 @@ namespace tessera {
 
 struct LoadOptions {
     // Observation window for CSV inputs (JSON files carry their own domain).
-    // Unset: the bounding box of the points (padded by half the mean spacing so
-    // that points on the hull are not on the boundary).
+    // Unset: the bounding box of the points (an error if it has zero extent).
     std::optional<Domain> input_domain;
 };
 

@@ -1,0 +1,106 @@
+// Exemplar helpers: building elements and checking the data model's invariants.
+#include "tessera/exemplar.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <unordered_set>
+
+#include "tessera/error.hpp"
+
+namespace tessera {
+
+int Exemplar::find_type(const std::string& name) const {
+    for (size_t i = 0; i < types.size(); ++i)
+        if (types[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+int Exemplar::type_index(const std::string& name) {
+    int t = find_type(name);
+    if (t >= 0) return t;
+    ElementType t;
+    t.name = name;
+    types.push_back(std::move(t));
+    return static_cast<int>(types.size()) - 1;
+}
+
+int Exemplar::add_element(int type, const std::vector<Vec3>& positions, double radius) {
+    Element e;
+    e.type = type;
+    e.first_sample = static_cast<int>(samples.size());
+    e.sample_count = static_cast<int>(positions.size());
+    e.radius = radius;
+    const int index = static_cast<int>(elements.size());
+    e.id = static_cast<std::uint64_t>(index);
+    Vec3 c;
+    for (size_t s = 0; s < positions.size(); ++s) {
+        samples.push_back(Sample{positions[s], index, static_cast<int>(s), 0.0});
+        c += positions[s];
+    }
+    if (!positions.empty()) e.position = c / static_cast<double>(positions.size());
+    elements.push_back(std::move(e));
+    return index;
+}
+
+void Exemplar::update_positions() {
+    for (auto& e : elements) {
+        Vec3 c;
+        for (int s = 0; s < e.sample_count; ++s) c += samples[e.first_sample + s].p;
+        if (e.sample_count > 0) e.position = c / static_cast<double>(e.sample_count);
+    }
+}
+
+bool Exemplar::has_multi_sample_elements() const {
+    for (const auto& e : elements)
+        if (e.sample_count > 1) return true;
+    return false;
+}
+
+void Exemplar::validate(const std::string& source) const {
+    auto fail = [&](const std::string& what) { throw Error(ErrorKind::input, source + ": " + what); };
+    if (dimension != 2 && dimension != 3) fail("dimension must be 2 or 3");
+    if (elements.empty()) fail("no elements (the exemplar is empty)");
+    if (types.empty()) fail("no element types");
+    if (domain.dimension() != dimension) fail("domain dimension differs from the data's dimension");
+    std::unordered_set<std::string> names;
+    for (const auto& t : types) {
+        if (t.name.empty()) fail("an element type has an empty name");
+        if (!names.insert(t.name).second) fail("element type '" + t.name + "' is defined twice");
+    }
+    std::vector<int> count_of_type(types.size(), -1);
+    int expected_first = 0;
+    for (size_t i = 0; i < elements.size(); ++i) {
+        const auto& e = elements[i];
+        const std::string which = "element " + std::to_string(i);
+        if (e.type < 0 || e.type >= static_cast<int>(types.size())) fail(which + " has an unknown element type");
+        if (e.sample_count < 1) fail(which + " has no samples");
+        if (e.first_sample != expected_first) fail(which + " does not own a contiguous run of samples");
+        expected_first += e.sample_count;
+        if (!(e.radius >= 0.0) || !std::isfinite(e.radius)) fail(which + " has a radius that is negative or not finite");
+        if (!std::isfinite(e.scale) || !(e.scale > 0.0)) fail(which + " has a scale that is not > 0");
+        if (e.attributes.size() != attribute_names.size())
+            fail(which + " has " + std::to_string(e.attributes.size()) + " attributes, expected " +
+                 std::to_string(attribute_names.size()));
+        for (double a : e.attributes)
+            if (!std::isfinite(a)) fail(which + " has an attribute that is not finite");
+        int& c = count_of_type[e.type];
+        if (c < 0) c = e.sample_count;
+        else if (c != e.sample_count)
+            fail("elements of type '" + types[e.type].name + "' have different sample counts (" +
+                 std::to_string(c) + " and " + std::to_string(e.sample_count) + ")");
+    }
+    if (expected_first != static_cast<int>(samples.size())) fail("samples do not match the elements' sample runs");
+    for (size_t i = 0; i < samples.size(); ++i) {
+        const auto& s = samples[i];
+        if (!is_finite(s.p)) fail("sample " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+        if (s.element < 0 || s.element >= static_cast<int>(elements.size()))
+            fail("sample " + std::to_string(i) + " names an element that does not exist");
+        const auto& e = elements[s.element];
+        if (static_cast<int>(i) < e.first_sample || static_cast<int>(i) >= e.first_sample + e.sample_count)
+            fail("sample " + std::to_string(i) + " names the wrong element");
+        if (s.sample_id != static_cast<int>(i) - e.first_sample)
+            fail("sample " + std::to_string(i) + " has sample id out of order");
+    }
+}
+
+}  // namespace tessera

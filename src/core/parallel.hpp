@@ -1,0 +1,20 @@
+// A deterministic parallel-for: the range is cut into fixed contiguous chunks
+// (independent of timing), each index writes only its own output slot, and the
+// caller reduces slots in index order. Worker threads are started per call:
+// calls are coarse (one per solver phase), so a pool would save little and would
+// add shared state, which the library must not have.
+#pragma once
+
+#include <functional>
+
+namespace tessera::core {
+
+// Effective thread count for a requested value (0 = hardware concurrency).
+int resolve_threads(int requested);
+
+// Calls body(begin, end, thread_index) on disjoint chunks covering [0, n).
+// thread_index < threads; each thread owns scratch indexed by it.
+// Exceptions thrown by a body are rethrown in the caller (the first by chunk order).
+void parallel_for(int n, int threads, const std::function<void(int begin, int end, int thread)>& body);
+
+}  // namespace tessera::core

@@ -1,0 +1,43 @@
+// Counter-based random numbers (DESIGN.md, "API conventions"): every draw is a
+// hash of (seed, purpose, a, b, counter), never a shared sequential stream, so
+// results do not depend on thread count or scheduling, and a piece of work
+// (an element, a tile) can be redone alone and draw the same numbers.
+#pragma once
+
+#include <cstdint>
+
+namespace tessera::core {
+
+// SplitMix64 finaliser: a bijective 64-bit mixer with good avalanche.
+constexpr std::uint64_t mix64(std::uint64_t z) {
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+// What a draw is for; part of the key so that purposes never share numbers.
+enum class Purpose : std::uint64_t { patch_choice = 1, patch_offset = 2, tie_break = 3, jitter = 4, test = 99 };
+
+// A keyed stream: draw(i) is a pure function of (seed, purpose, a, b, i).
+class KeyedRng {
+public:
+    constexpr KeyedRng(std::uint64_t seed, Purpose purpose, std::uint64_t a = 0, std::uint64_t b = 0)
+        : key_(mix64(mix64(mix64(seed ^ 0x5851f42d4c957f2dULL) ^ static_cast<std::uint64_t>(purpose)) ^ a) ^
+               mix64(b + 0x632be59bd9b4e019ULL)) {}
+
+    constexpr std::uint64_t bits(std::uint64_t counter) const { return mix64(key_ ^ mix64(counter)); }
+    // Uniform in [0, 1) with 53 random bits.
+    constexpr double uniform(std::uint64_t counter) const {
+        return static_cast<double>(bits(counter) >> 11) * 0x1.0p-53;
+    }
+    // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; bias < 2^-32 for small n).
+    std::uint64_t below(std::uint64_t counter, std::uint64_t n) const {
+        return static_cast<std::uint64_t>((static_cast<unsigned __int128>(bits(counter)) * n) >> 64);
+    }
+
+private:
+    std::uint64_t key_;
+};
+
+}  // namespace tessera::core
