@@ -16,8 +16,8 @@ int Exemplar::find_type(const std::string& name) const {
 }
 
 int Exemplar::type_index(const std::string& name) {
-    int t = find_type(name);
-    if (t >= 0) return t;
+    const int found = find_type(name);
+    if (found >= 0) return found;
     ElementType t;
     t.name = name;
     types.push_back(std::move(t));
