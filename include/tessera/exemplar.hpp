@@ -74,7 +74,10 @@ struct Exemplar {
 // Statistics a method reports about its run.
 struct RunStats {
     std::string method;                  // "det", ...
-    std::vector<double> energy;          // energy after each iteration (Eq. 2)
+    std::vector<double> energy;          // energy found by each iteration's search (Eq. 2)
+    double final_energy = 0.0;           // energy of the returned arrangement
+    double radius = 0.0;                 // neighbourhood radius used
+    int solver_bound_hits = 0;           // iterations whose linear solve hit its iteration bound
     std::vector<double> iteration_seconds;
     double init_seconds = 0.0;
     double total_seconds = 0.0;

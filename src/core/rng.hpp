@@ -31,9 +31,10 @@ public:
     constexpr double uniform(std::uint64_t counter) const {
         return static_cast<double>(bits(counter) >> 11) * 0x1.0p-53;
     }
-    // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; bias < 2^-32 for small n).
+    // Uniform integer in [0, n), n > 0 (from 53 bits; bias negligible for n << 2^53).
     std::uint64_t below(std::uint64_t counter, std::uint64_t n) const {
-        return static_cast<std::uint64_t>((static_cast<unsigned __int128>(bits(counter)) * n) >> 64);
+        const auto v = static_cast<std::uint64_t>(uniform(counter) * static_cast<double>(n));
+        return v < n ? v : n - 1;
     }
 
 private:

@@ -1,9 +1,73 @@
-// Placeholder until the solver lands in this directory.
+// Discrete element texture synthesis (Pseudocode 1): initialize by patch copy,
+// then iterate search and assignment, reporting the energy of Eq. 2 each time.
+#include <chrono>
+#include <cmath>
+
+#include "core/parallel.hpp"
+#include "det/assign.hpp"
+#include "det/init.hpp"
+#include "det/input_index.hpp"
+#include "det/search.hpp"
 #include "tessera/det.hpp"
 #include "tessera/error.hpp"
 
 namespace tessera {
-Arrangement synthesize_det(const Exemplar&, const Domain&, const DetOptions&, const Progress&) {
-    throw Error(ErrorKind::internal, "synthesize_det is being written");
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void report(const Progress& progress, const ProgressEvent& event) {
+    if (progress && !progress(event)) throw Cancelled();
 }
+
+}  // namespace
+
+Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const DetOptions& options,
+                           const Progress& progress) {
+    const auto t0 = Clock::now();
+    exemplar.validate("exemplar");
+    if (domain.dimension() != exemplar.dimension)
+        throw Error(ErrorKind::domain, "the output domain is " + std::to_string(domain.dimension()) +
+                                           "D but the exemplar is " + std::to_string(exemplar.dimension) + "D");
+    const det::Params params = det::resolve_params(exemplar, options);
+    const int threads = core::resolve_threads(options.threads);
+
+    report(progress, {"init", -1, options.iterations, 0.0, seconds_since(t0)});
+    const det::InputIndex index = det::build_input_index(
+        exemplar, params, options.search == SearchMode::kcoherence ? options.k : 0, threads);
+    det::InitResult init = det::initialize_patches(exemplar, index, domain, params, options);
+
+    det::OutputState state;
+    state.arrangement = std::move(init.arrangement);
+    state.key = det::sample_keys(state.arrangement);
+    state.match = std::move(init.source_sample);
+    state.source_element = std::move(init.source_element);
+
+    RunStats& stats = state.arrangement.stats;
+    stats.method = "det";
+    stats.threads = threads;
+    stats.seed = options.seed;
+    stats.init_seconds = seconds_since(t0);
+
+    const det::SearchSettings search{options.search, threads};
+    for (int it = 0; it < options.iterations; ++it) {
+        const auto ti = Clock::now();
+        const double energy = det::search_step(state, index, domain, params, search);
+        const det::AssignReport assigned = det::assign_step(state, index, domain, params, threads);
+        stats.energy.push_back(energy);
+        stats.iteration_seconds.push_back(seconds_since(ti));
+        if (!assigned.cg_converged) ++stats.solver_bound_hits;
+        report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
+    }
+    // Energy of the result itself (a search without assignment).
+    stats.final_energy = det::search_step(state, index, domain, params, search);
+    stats.radius = params.radius;
+    stats.total_seconds = seconds_since(t0);
+    report(progress, {"done", options.iterations, options.iterations, stats.final_energy, stats.total_seconds});
+    return std::move(state.arrangement);
+}
+
 }  // namespace tessera

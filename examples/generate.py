@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""Writes the built-in exemplars of examples/ (tessera native JSON).
+
+Deterministic (fixed seeds) and standard-library only, so the files can be
+regenerated anywhere: python3 examples/generate.py. The JSON files are committed;
+this script documents how they were made.
+"""
+import json
+import math
+import os
+import random
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def write(name, dimension, domain_max, types, elements, description):
+    doc = {
+        "format": "tessera",
+        "version": 1,
+        "description": description,
+        "dimension": dimension,
+        "domain": {"type": "box", "min": [0.0] * dimension, "max": domain_max},
+        "types": types,
+        "elements": elements,
+    }
+    with open(os.path.join(HERE, name + ".json"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
+def r4(v):
+    return round(v, 4)
+
+
+def dart_throw(rng, size, min_dist, count, tries=200000, existing=()):
+    """Poisson-disk points by dart throwing (torus-free, plain box)."""
+    pts = list(existing)
+    for _ in range(tries):
+        if len(pts) >= count:
+            break
+        p = [rng.uniform(0, s) for s in size]
+        if all(math.dist(p, q[:len(p)]) >= min_dist for q in pts):
+            pts.append(p)
+    return pts[len(existing):]
+
+
+def poisson_disk_2d():
+    rng = random.Random(11)
+    pts = dart_throw(rng, [10, 10], 0.8, 110)
+    write("poisson_disk_2d", 2, [10, 10], [{"name": "dot"}],
+          [{"type": "dot", "position": [r4(x), r4(y)], "radius": 0.3} for x, y in pts],
+          "Poisson-disk points (dart throwing, minimum distance 0.8) in a 10 x 10 box.")
+
+
+def hex_jittered_2d():
+    rng = random.Random(12)
+    a = 1.0
+    els = []
+    rows = int(10 / (a * math.sqrt(3) / 2))
+    for j in range(rows):
+        for i in range(11):
+            x = (i + 0.5 * (j % 2) + 0.25) * a + rng.gauss(0, 0.05 * a)
+            y = (j + 0.5) * a * math.sqrt(3) / 2 + rng.gauss(0, 0.05 * a)
+            if 0 <= x <= 10 and 0 <= y <= 10:
+                els.append({"type": "plum", "position": [r4(x), r4(y)], "radius": 0.45})
+    write("hex_jittered_2d", 2, [10, 10], [{"name": "plum"}], els,
+          "Hexagonal lattice of spacing 1 with Gaussian jitter (sd 0.05) in a 10 x 10 box.")
+
+
+def two_class_2d():
+    rng = random.Random(13)
+    big = dart_throw(rng, [10, 10], 2.0, 22)
+    els = [{"type": "stone", "position": [r4(x), r4(y)], "radius": 0.7} for x, y in big]
+    small = []
+    for _ in range(200000):
+        if len(small) >= 90:
+            break
+        p = [rng.uniform(0, 10), rng.uniform(0, 10)]
+        if all(math.dist(p, q) >= 1.15 for q in big) and all(math.dist(p, q) >= 0.55 for q in small):
+            small.append(p)
+    els += [{"type": "pebble", "position": [r4(x), r4(y)], "radius": 0.22} for x, y in small]
+    write("two_class_2d", 2, [10, 10], [{"name": "stone"}, {"name": "pebble"}], els,
+          "Two classes: large stones (inhibition 2.0) and pebbles kept off the stones, in a 10 x 10 box.")
+
+
+def sticks_2d():
+    """5-sample sticks of length 1.2 in loose rows, mostly horizontal with tilt."""
+    rng = random.Random(14)
+    els = []
+    centers = dart_throw(rng, [10, 10], 1.0, 80)
+    placed = []
+    for cx, cy in centers:
+        ang = rng.gauss(0.0, 0.25)
+        length = 1.2
+        pts = [[cx + (t / 4 - 0.5) * length * math.cos(ang), cy + (t / 4 - 0.5) * length * math.sin(ang)]
+               for t in range(5)]
+        # keep sticks apart: sample-to-sample distance >= 0.35 from earlier sticks
+        if any(math.dist(p, q) < 0.35 for p in pts for s in placed for q in s):
+            continue
+        if any(not (0 <= p[0] <= 10 and 0 <= p[1] <= 10) for p in pts):
+            continue
+        placed.append(pts)
+        els.append({"type": "stick", "samples": [[r4(x), r4(y)] for x, y in pts]})
+    write("sticks_2d", 2, [10, 10], [{"name": "stick", "rigid": True}], els,
+          "Rigid sticks of 5 samples (length 1.2), mostly horizontal, in a 10 x 10 box.")
+
+
+def relax_spheres(pts, radius, size, rng, steps=400):
+    """Soft-sphere repulsion in a box: pushes overlapping spheres apart (near-jammed packing)."""
+    d0 = 2 * radius
+    for _ in range(steps):
+        moved = 0.0
+        for i in range(len(pts)):
+            f = [0.0, 0.0, 0.0]
+            for j in range(len(pts)):
+                if i == j:
+                    continue
+                d = [pts[i][k] - pts[j][k] for k in range(3)]
+                dist = math.sqrt(sum(c * c for c in d))
+                if dist < d0 and dist > 1e-9:
+                    s = (d0 - dist) / dist * 0.5
+                    for k in range(3):
+                        f[k] += d[k] * s
+            for k in range(3):
+                pts[i][k] = min(size[k] - radius, max(radius, pts[i][k] + f[k]))
+            moved += sum(abs(c) for c in f)
+        if moved < 1e-4:
+            break
+    return pts
+
+
+def spheres_3d():
+    """Random close packing of equal spheres in a box (random start + soft repulsion)."""
+    rng = random.Random(15)
+    size = [6.0, 6.0, 6.0]
+    radius = 0.5
+    n = 230  # packing fraction about 0.56 in the 6^3 box
+    pts = [[rng.uniform(radius, s - radius) for s in size] for _ in range(n)]
+    pts = relax_spheres(pts, radius, size, rng)
+    write("spheres_3d", 3, size, [{"name": "sphere"}],
+          [{"type": "sphere", "position": [r4(c) for c in p], "radius": radius} for p in pts],
+          "Near-random close packing of 230 spheres of radius 0.5 in a 6 x 6 x 6 box.")
+
+
+def rods_3d():
+    """3D rigid rods of 5 samples lying in layers, random yaw, small pitch (a pile of sticks)."""
+    rng = random.Random(16)
+    size = [8.0, 8.0, 3.0]
+    els, placed = [], []
+    for _ in range(100000):
+        if len(els) >= 90:
+            break
+        c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), rng.uniform(0.2, size[2] - 0.2)]
+        yaw = rng.uniform(0, math.pi)
+        pitch = rng.gauss(0, 0.12)
+        length = 1.6
+        d = [math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), math.sin(pitch)]
+        pts = [[c[k] + (t / 4 - 0.5) * length * d[k] for k in range(3)] for t in range(5)]
+        if any(not (0 <= p[k] <= size[k]) for p in pts for k in range(3)):
+            continue
+        if any(math.dist(p, q) < 0.45 for p in pts for s in placed for q in s):
+            continue
+        placed.append(pts)
+        els.append({"type": "rod", "samples": [[r4(x) for x in p] for p in pts]})
+    write("rods_3d", 3, size, [{"name": "rod", "rigid": True}], els,
+          "Rigid rods of 5 samples (length 1.6) with random heading and small tilt in an 8 x 8 x 3 box.")
+
+
+if __name__ == "__main__":
+    poisson_disk_2d()
+    hex_jittered_2d()
+    two_class_2d()
+    sticks_2d()
+    spheres_3d()
+    rods_3d()

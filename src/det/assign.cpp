@@ -1,0 +1,227 @@
+#include "det/assign.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.hpp"
+
+namespace tessera::det {
+
+namespace {
+
+constexpr double locked_weight = 1e6;
+constexpr int cg_max_iterations = 1000;
+
+}  // namespace
+
+// Eq. 4: minimise sum_{s_o} sum_{s'_o in n(s_o)} w |(p(s'_o) - p(s_o)) - p^(s_o, s'_o)|^2
+// + anchor |p - p_current|^2. Solved for the displacement so the tolerance is
+// relative to the mismatch, not to the coordinates' magnitude.
+AssignReport assign_positions(OutputState& state, const Params& params, int threads) {
+    Arrangement& out = state.arrangement;
+    const int n = static_cast<int>(out.samples.size());
+    const int dim = params.dimension;
+    std::vector<Eigen::Triplet<double>> triplets;
+    std::vector<double> diagonal(n, params.anchor_weight);
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, dim);  // -gradient at the current positions
+    size_t total_pairs = 0;
+    for (const auto& p : state.pairs) total_pairs += p.size();
+    triplets.reserve(2 * total_pairs);
+    for (int c = 0; c < n; ++c) {
+        const int ce = out.samples[c].element;
+        for (const Pair& pr : state.pairs[c]) {
+            const int o = pr.output;
+            const double w = out.samples[o].element == ce ? params.intra_weight : 1.0;
+            diagonal[c] += w;
+            diagonal[o] += w;
+            triplets.emplace_back(c, o, -w);
+            triplets.emplace_back(o, c, -w);
+            const Vec3 residual = (out.samples[o].p - out.samples[c].p) - pr.predicted;
+            for (int k = 0; k < dim; ++k) {
+                rhs(o, k) -= w * residual[k];
+                rhs(c, k) += w * residual[k];
+            }
+        }
+    }
+    for (int i = 0; i < n; ++i) {
+        if (out.elements[out.samples[i].element].locked) diagonal[i] += locked_weight;
+        triplets.emplace_back(i, i, diagonal[i]);
+    }
+    Eigen::SparseMatrix<double> a(n, n);
+    a.setFromTriplets(triplets.begin(), triplets.end());
+
+    AssignReport report;
+    Eigen::MatrixXd delta = Eigen::MatrixXd::Zero(n, dim);
+    std::vector<int> iterations(dim, 0);
+    std::vector<char> converged(dim, 1);
+    core::parallel_for(dim, std::min(threads, dim), [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
+            cg.setMaxIterations(cg_max_iterations);
+            cg.setTolerance(1e-8);
+            cg.compute(a);
+            delta.col(k) = cg.solve(rhs.col(k));
+            iterations[k] = static_cast<int>(cg.iterations());
+            converged[k] = cg.info() == Eigen::Success;
+        }
+    });
+    for (int k = 0; k < dim; ++k) {
+        report.cg_iterations = std::max(report.cg_iterations, iterations[k]);
+        report.cg_converged = report.cg_converged && converged[k];
+    }
+    for (int i = 0; i < n; ++i) {
+        if (out.elements[out.samples[i].element].locked) continue;
+        for (int k = 0; k < dim; ++k) out.samples[i].p[k] += delta(i, k);
+    }
+    return report;
+}
+
+namespace {
+
+// Attribute distance |q_a - q_b|^2 between two input elements for Eq. 5:
+// type, radius (in spacings), 2D angle and free attributes (in standard deviations).
+struct AttributeScale {
+    double spacing = 1.0;
+    std::vector<double> attribute_sd;
+};
+
+double attribute_distance(const Exemplar& ex, int a, int b, const AttributeScale& scale, int dimension) {
+    if (a == b) return 0.0;
+    const Element& ea = ex.elements[a];
+    const Element& eb = ex.elements[b];
+    double d = ea.type != eb.type ? 1.0 : 0.0;
+    const double dr = (ea.radius - eb.radius) / scale.spacing;
+    d += dr * dr;
+    if (dimension == 2 && ea.sample_count == 1) d += 0.5 * (1.0 - std::cos(ea.orientation.angle_z() - eb.orientation.angle_z()));
+    for (size_t k = 0; k < ea.attributes.size(); ++k) {
+        const double da = (ea.attributes[k] - eb.attributes[k]) / scale.attribute_sd[k];
+        d += da * da;
+    }
+    return d;
+}
+
+// Eq. 5: each output element takes the attributes of the input element among its
+// votes that minimises the summed attribute distance to all votes.
+void assign_attributes(OutputState& state, const InputIndex& index, const Params& params, int threads) {
+    Arrangement& out = state.arrangement;
+    const Exemplar& ex = *index.exemplar;
+    const int n_el = static_cast<int>(out.elements.size());
+    // Votes per output element: input elements matched to any of its samples.
+    std::vector<std::vector<int>> votes(n_el);
+    for (size_t so = 0; so < out.samples.size(); ++so) {
+        const int m = state.match[so];
+        if (m >= 0) votes[out.samples[so].element].push_back(index.element[m]);
+        for (const Pair& pr : state.pairs[so]) votes[out.samples[pr.output].element].push_back(index.element[pr.input]);
+    }
+    AttributeScale scale;
+    scale.spacing = params.spacing;
+    scale.attribute_sd.assign(ex.attribute_names.size(), 1.0);
+    for (size_t k = 0; k < ex.attribute_names.size(); ++k) {
+        double mean = 0.0, sq = 0.0;
+        for (const auto& e : ex.elements) mean += e.attributes[k];
+        mean /= ex.elements.size();
+        for (const auto& e : ex.elements) sq += (e.attributes[k] - mean) * (e.attributes[k] - mean);
+        const double sd = std::sqrt(sq / ex.elements.size());
+        scale.attribute_sd[k] = sd > 0.0 ? sd : 1.0;
+    }
+    core::parallel_for(n_el, threads, [&](int begin, int end, int) {
+        std::vector<std::pair<int, int>> distinct;  // (input element, count)
+        for (int e = begin; e < end; ++e) {
+            Element& el = out.elements[e];
+            if (el.locked || votes[e].empty()) continue;
+            auto& v = votes[e];
+            std::sort(v.begin(), v.end());
+            distinct.clear();
+            for (int x : v) {
+                if (!distinct.empty() && distinct.back().first == x) ++distinct.back().second;
+                else distinct.emplace_back(x, 1);
+            }
+            int best = -1;
+            double best_cost = INFINITY;
+            for (const auto& [cand, cnt] : distinct) {
+                if (ex.elements[cand].type != el.type && el.sample_count > 1) continue;  // shapes keep their type
+                double c = 0.0;
+                for (const auto& [other, count] : distinct)
+                    c += count * attribute_distance(ex, cand, other, scale, params.dimension);
+                if (c < best_cost) best_cost = c, best = cand;  // ties: lowest input index
+            }
+            if (best < 0) continue;
+            const Element& src = ex.elements[best];
+            state.source_element[e] = best;
+            el.type = src.type;
+            el.radius = src.radius;
+            el.attributes = src.attributes;
+            el.scale = src.scale;
+            if (el.sample_count == 1) el.orientation = src.orientation;
+        }
+    });
+}
+
+// Rigid elements become the best-fitting rigid copy of their source element.
+void snap_rigid_elements(OutputState& state, const InputIndex& index, int dimension, int threads) {
+    Arrangement& out = state.arrangement;
+    const Exemplar& ex = *index.exemplar;
+    core::parallel_for(static_cast<int>(out.elements.size()), threads, [&](int begin, int end, int) {
+        std::vector<Vec3> a, b;
+        for (int e = begin; e < end; ++e) {
+            Element& el = out.elements[e];
+            if (el.sample_count < 2 || el.locked || !out.types[el.type].rigid) continue;
+            const Element& src = ex.elements[state.source_element[e]];
+            a.resize(el.sample_count);
+            b.resize(el.sample_count);
+            for (int s = 0; s < el.sample_count; ++s) {
+                a[s] = ex.samples[src.first_sample + s].p;
+                b[s] = out.samples[el.first_sample + s].p;
+            }
+            Quat r;
+            Vec3 t;
+            best_rigid_fit(a.data(), b.data(), el.sample_count, dimension, r, t);
+            for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p = r.rotate(a[s]) + t;
+            el.orientation = r * src.orientation;
+        }
+    });
+}
+
+// Elements that left the box are translated back (as a whole, so shapes are kept).
+void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
+    const Box b = domain.bounds();
+    for (auto& el : out.elements) {
+        if (el.locked) continue;
+        Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+        for (int s = 0; s < el.sample_count; ++s) {
+            const Vec3& p = out.samples[el.first_sample + s].p;
+            for (int k = 0; k < dimension; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+        }
+        Vec3 shift;
+        for (int k = 0; k < dimension; ++k) {
+            if (hi[k] - lo[k] > b.hi[k] - b.lo[k]) shift[k] = b.center()[k] - 0.5 * (lo[k] + hi[k]);
+            else if (lo[k] < b.lo[k]) shift[k] = b.lo[k] - lo[k];
+            else if (hi[k] > b.hi[k]) shift[k] = b.hi[k] - hi[k];
+        }
+        if (shift == Vec3{}) continue;
+        for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p += shift;
+    }
+}
+
+}  // namespace
+
+void update_poses(OutputState& state, const InputIndex&, int dimension) {
+    Arrangement& out = state.arrangement;
+    out.update_positions();
+    if (dimension == 2)
+        for (auto& el : out.elements) el.position.z = 0.0;
+}
+
+AssignReport assign_step(OutputState& state, const InputIndex& index, const Domain& domain, const Params& params,
+                         int threads) {
+    AssignReport report = assign_positions(state, params, threads);
+    assign_attributes(state, index, params, threads);
+    snap_rigid_elements(state, index, params.dimension, threads);
+    keep_inside_domain(state.arrangement, domain, params.dimension);
+    update_poses(state, index, params.dimension);
+    return report;
+}
+
+}  // namespace tessera::det

@@ -1,0 +1,30 @@
+// Assignment step (section 4.3): positions by least squares over all predicted
+// offsets (Eq. 3, 4), attributes by voting (Eq. 5), then each rigid element is
+// snapped to the best-fitting rigid copy of the input element it voted for, and
+// elements are kept inside the output domain.
+#pragma once
+
+#include "det/model.hpp"
+
+namespace tessera::det {
+
+struct AssignReport {
+    int cg_iterations = 0;     // largest count over the coordinates
+    bool cg_converged = true;  // false: the iteration bound was hit (reported, not fatal)
+};
+
+AssignReport assign_step(OutputState& state, const InputIndex& index, const Domain& domain, const Params& params,
+                         int threads);
+
+// The position part alone (Eq. 4 as a sparse positive-definite solve).
+AssignReport assign_positions(OutputState& state, const Params& params, int threads);
+
+// Best rigid motion (rotation R, translation t) minimising sum |R a_k + t - b_k|^2
+// (Kabsch; no reflections; rotation about z only when dimension == 2).
+void best_rigid_fit(const Vec3* a, const Vec3* b, int n, int dimension, Quat& rotation, Vec3& translation);
+
+// Re-derives each element's pose (position = centroid; orientation of rigid
+// multi-sample elements from their fit to the source element's layout).
+void update_poses(OutputState& state, const InputIndex& index, int dimension);
+
+}  // namespace tessera::det

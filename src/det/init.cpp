@@ -1,0 +1,184 @@
+#include "det/init.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/rng.hpp"
+#include "tessera/error.hpp"
+
+namespace tessera::det {
+
+namespace {
+
+struct CellGrid {
+    int dims[3] = {1, 1, 1};
+    Vec3 lo;
+    double size = 1.0;
+    int count() const { return dims[0] * dims[1] * dims[2]; }
+    int index_of(const Vec3& p, int dimension) const {
+        int c[3] = {0, 0, 0};
+        for (int k = 0; k < dimension; ++k) {
+            c[k] = static_cast<int>(std::floor((p[k] - lo[k]) / size));
+            if (c[k] < 0 || c[k] >= dims[k]) return -1;
+        }
+        return (c[2] * dims[1] + c[1]) * dims[0] + c[0];
+    }
+    Vec3 cell_lo(int index) const {
+        const int x = index % dims[0], y = (index / dims[0]) % dims[1], z = index / (dims[0] * dims[1]);
+        return lo + Vec3{x * size, y * size, z * size};
+    }
+};
+
+}  // namespace
+
+InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*index*/, const Domain& domain,
+                              const Params& params, const DetOptions& options) {
+    const int dim = params.dimension;
+    const Box in_box = exemplar.domain.bounds();
+    const Box out_box = domain.bounds();
+    double min_extent = INFINITY;
+    for (int k = 0; k < dim; ++k) min_extent = std::min(min_extent, in_box.hi[k] - in_box.lo[k]);
+    double patch = options.patch_size > 0.0 ? options.patch_size : std::min(2.0 * params.radius, 0.5 * min_extent);
+    patch = std::min(patch, min_extent);
+
+    CellGrid cells;
+    cells.lo = out_box.lo;
+    cells.size = patch;
+    for (int k = 0; k < dim; ++k)
+        cells.dims[k] = std::max(1, static_cast<int>(std::ceil((out_box.hi[k] - out_box.lo[k]) / patch - 1e-9)));
+    if (static_cast<double>(cells.count()) > 5e7)
+        throw Error(ErrorKind::option, "--patch-size is too small for this domain (more than 5e7 patches)");
+
+    // Input elements by centroid for window queries.
+    const int n_in = static_cast<int>(exemplar.elements.size());
+    std::vector<Vec3> in_centers(n_in);
+    for (int e = 0; e < n_in; ++e) {
+        in_centers[e] = exemplar.elements[e].position;
+        if (dim == 2) in_centers[e].z = 0.0;
+    }
+    core::SpatialGrid in_grid;
+    in_grid.build(in_centers, std::max(params.spacing, patch / 4.0), dim);
+
+    // Band around a cell in which the candidate windows are compared with placed elements.
+    const double band = std::min(params.spacing, 0.5 * patch);
+    const double cap2 = params.cap2;
+
+    InitResult result;
+    result.patch_size = patch;
+    Arrangement& out = result.arrangement;
+    out.dimension = dim;
+    out.types = exemplar.types;
+    out.attribute_names = exemplar.attribute_names;
+    out.domain = domain;
+
+    std::vector<std::vector<int>> placed(cells.count());  // output elements per cell (by centroid)
+    std::vector<int> window;                               // scratch: input elements in a window
+    const core::KeyedRng rng(options.seed, core::Purpose::patch_choice);
+
+    for (int c = 0; c < cells.count(); ++c) {
+        const Vec3 clo = cells.cell_lo(c);
+        // Output elements already placed in the band around this cell.
+        std::vector<int> band_elements;
+        int nc[3];
+        {
+            int x = c % cells.dims[0], y = (c / cells.dims[0]) % cells.dims[1], z = c / (cells.dims[0] * cells.dims[1]);
+            nc[0] = x, nc[1] = y, nc[2] = z;
+        }
+        for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int x = nc[0] + dx, y = nc[1] + dy, z = nc[2] + dz;
+                    if (x < 0 || y < 0 || z < 0 || x >= cells.dims[0] || y >= cells.dims[1] || z >= cells.dims[2])
+                        continue;
+                    const int nb = (z * cells.dims[1] + y) * cells.dims[0] + x;
+                    if (nb >= c) continue;  // raster order: only earlier cells are placed
+                    for (int e : placed[nb]) {
+                        const Vec3& p = out.elements[e].position;
+                        bool near = true;
+                        for (int k = 0; k < dim; ++k)
+                            near = near && p[k] >= clo[k] - band && p[k] <= clo[k] + patch + band;
+                        if (near) band_elements.push_back(e);
+                    }
+                }
+
+        // Choose among random windows the one most consistent with the band.
+        Vec3 best_origin;
+        double best_score = INFINITY;
+        const int tries = band_elements.empty() ? 1 : options.patch_candidates;
+        for (int j = 0; j < tries; ++j) {
+            Vec3 origin = in_box.lo;
+            for (int k = 0; k < dim; ++k) {
+                const double span = (in_box.hi[k] - in_box.lo[k]) - patch;
+                origin[k] += span > 0.0 ? span * rng.uniform(static_cast<std::uint64_t>(c) * 64 * 3 + j * 3 + k) : 0.0;
+            }
+            double score = 0.0;
+            // Placed output elements should find an input element of their type where they sit.
+            for (int e : band_elements) {
+                const Vec3 q = out.elements[e].position - clo + origin;
+                const int type = out.elements[e].type;
+                const int hit = in_grid.nearest(q, params.spacing, [&](int i) { return exemplar.elements[i].type == type; });
+                double d2 = cap2;
+                if (hit >= 0) d2 = std::min(cap2, squared_norm(in_centers[hit] - q));
+                score += d2;
+            }
+            // Input elements that would land in already placed cells should find a placed element.
+            in_grid.for_each_within(origin + Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5,
+                                    (0.5 * patch + band) * std::sqrt(static_cast<double>(dim)), [&](int i, double) {
+                const Vec3 q = in_centers[i] - origin + clo;
+                bool in_band = true, in_cell = true;
+                for (int k = 0; k < dim; ++k) {
+                    in_band = in_band && q[k] >= clo[k] - band && q[k] <= clo[k] + patch + band;
+                    in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
+                }
+                if (!in_band || in_cell) return;
+                const int cell = cells.index_of(q, dim);
+                if (cell < 0 || cell >= c) return;  // lands outside, or on a cell not placed yet
+                double d2 = cap2;
+                for (int e : band_elements)
+                    if (out.elements[e].type == exemplar.elements[i].type)
+                        d2 = std::min(d2, squared_norm(out.elements[e].position - q));
+                score += d2;
+            });
+            if (score < best_score) best_score = score, best_origin = origin;
+        }
+
+        // Copy whole elements whose centroid lies in the chosen window (and in the domain).
+        window.clear();
+        in_grid.for_each_within(best_origin + Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5,
+                                0.5 * patch * std::sqrt(static_cast<double>(dim)) + 1e-12,
+                                [&](int i, double) { window.push_back(i); });
+        std::sort(window.begin(), window.end());
+        for (int i : window) {
+            const Vec3 q = in_centers[i] - best_origin + clo;
+            bool in_cell = true;
+            for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
+            if (!in_cell || !domain.inside(q)) continue;
+            const Element& src = exemplar.elements[i];
+            const Vec3 shift = clo - best_origin;
+            Element e = src;
+            e.first_sample = static_cast<int>(out.samples.size());
+            e.id = out.elements.size();
+            e.locked = false;
+            const int index_out = static_cast<int>(out.elements.size());
+            for (int s = 0; s < src.sample_count; ++s) {
+                Sample smp = exemplar.samples[src.first_sample + s];
+                smp.p = smp.p + shift;
+                if (dim == 2) smp.p.z = 0.0;
+                smp.element = index_out;
+                out.samples.push_back(smp);
+                result.source_sample.push_back(src.first_sample + s);
+            }
+            e.position = src.position + shift;
+            if (dim == 2) e.position.z = 0.0;
+            out.elements.push_back(std::move(e));
+            result.source_element.push_back(i);
+            const int cell = cells.index_of(out.elements.back().position, dim);
+            placed[cell >= 0 ? cell : c].push_back(index_out);
+        }
+    }
+    if (out.elements.empty())
+        throw Error(ErrorKind::domain, "the output domain " + domain.describe() + " is too small to hold one element");
+    return result;
+}
+
+}  // namespace tessera::det

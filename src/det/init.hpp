@@ -1,0 +1,24 @@
+// Patch-copy initialization (section 4.1): the output domain is cut into cells
+// of the patch size; each cell receives a copy of the whole elements whose
+// centroids lie in a same-sized window of the exemplar. Of several random
+// windows, the one that agrees best with the elements already placed around the
+// cell is taken (image-quilting-style seams; the paper's "preferring input
+// patches with similar boundary conditions"), which keeps structured patterns
+// aligned across seams.
+#pragma once
+
+#include "det/model.hpp"
+
+namespace tessera::det {
+
+struct InitResult {
+    Arrangement arrangement;           // output elements and samples, ids 0..n-1
+    std::vector<int> source_sample;    // per output sample: the input sample it was copied from
+    std::vector<int> source_element;   // per output element: the input element it was copied from
+    double patch_size = 0.0;
+};
+
+InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
+                              const Params& params, const DetOptions& options);
+
+}  // namespace tessera::det

@@ -1,0 +1,156 @@
+#include "det/search.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.hpp"
+#include "det/input_index.hpp"
+#include "det/matching.hpp"
+
+namespace tessera::det {
+
+namespace {
+
+// Per-thread buffers, reused for every sample of the step.
+struct Scratch {
+    std::vector<NeighborEntry> out_nb;
+    std::vector<std::pair<double, int>> sort_buf;
+    std::vector<int> candidates;
+    std::vector<unsigned> stamp;  // stamp[i] == current: input i already a candidate
+    unsigned current = 0;
+    MatchScratch match;
+    std::vector<int> partner, best_partner;
+};
+
+// lambda * Eq. 6: the input neighbourhood n(s_i), shifted to p(s_o), should lie in the domain.
+double occupancy_term(const InputIndex& index, int i, const Vec3& center, const Domain& domain,
+                      const Params& params) {
+    if (params.lambda <= 0.0) return 0.0;
+    const NeighborEntry* nb = index.neighbors(i);
+    double sum = 0.0;
+    for (int q = 0; q < index.nb_within_r[i]; ++q) {
+        const double c = domain.occupancy(center + nb[q].offset);
+        sum += (1.0 - c) * (1.0 - c);
+    }
+    return params.lambda * sum;
+}
+
+void add_candidate(Scratch& s, int i) {
+    if (i < 0 || s.stamp[i] == s.current) return;
+    s.stamp[i] = s.current;
+    s.candidates.push_back(i);
+}
+
+void add_with_similarity_set(Scratch& s, const InputIndex& index, int i) {
+    if (i < 0) return;
+    add_candidate(s, i);
+    for (int q = index.sim_start[i]; q < index.sim_start[i + 1]; ++q) add_candidate(s, index.sim[q]);
+}
+
+}  // namespace
+
+double search_step(OutputState& state, const InputIndex& index, const Domain& domain, const Params& params,
+                   const SearchSettings& settings) {
+    const Arrangement& out = state.arrangement;
+    const int n = static_cast<int>(out.samples.size());
+    // Per-sample views of the output for neighbourhood gathering.
+    std::vector<Vec3> positions(n);
+    std::vector<int> type(n), element(n);
+    std::vector<double> radius(n);
+    for (int i = 0; i < n; ++i) {
+        positions[i] = out.samples[i].p;
+        if (params.dimension == 2) positions[i].z = 0.0;
+        element[i] = out.samples[i].element;
+        type[i] = out.elements[element[i]].type;
+        radius[i] = out.elements[element[i]].radius;
+    }
+    core::SpatialGrid grid;
+    grid.build(positions, params.radius, params.dimension);
+
+    const std::vector<int> previous = state.match;
+    state.match.resize(n, -1);
+    state.cost.resize(n, 0.0);
+    state.pairs.resize(n);
+
+    const int threads = core::resolve_threads(settings.threads);
+    std::vector<Scratch> scratch(threads);
+    for (auto& s : scratch) s.stamp.assign(index.size(), 0);
+
+    core::parallel_for(n, threads, [&](int begin, int end, int t) {
+        Scratch& s = scratch[t];
+        for (int so = begin; so < end; ++so) {
+            gather_neighbors(grid, positions, positions[so], so, params.radius, params.dimension, state.key, type,
+                             element, radius, s.out_nb, s.sort_buf, max_neighbors);
+            const int m = static_cast<int>(s.out_nb.size());
+            const int key = state.key[so];
+
+            // Candidate set.
+            ++s.current;
+            if (s.current == 0) {  // stamp wrapped: reset
+                std::fill(s.stamp.begin(), s.stamp.end(), 0u);
+                s.current = 1;
+            }
+            s.candidates.clear();
+            if (settings.mode == SearchMode::exhaustive || previous.empty()) {
+                for (int i : index.by_key[key]) add_candidate(s, i);
+            } else {
+                add_with_similarity_set(s, index, previous[so]);
+                // Coherence: each neighbour s'_o matched to m(s'_o) suggests the input sample
+                // at p(m(s'_o)) - (p(s'_o) - p(s_o)) for s_o (shifted as in [Han et al. 2006]).
+                for (const auto& e : s.out_nb) {
+                    const int mo = previous[e.sample];
+                    if (mo < 0) continue;
+                    const Vec3 predicted = index.positions[mo] - e.offset;
+                    add_with_similarity_set(s, index, index.nearest_with_key(predicted, key, std::sqrt(params.cap2)));
+                }
+                if (s.candidates.empty())
+                    for (int i : index.by_key[key]) add_candidate(s, i);
+            }
+            // Deterministic order whatever produced them.
+            std::sort(s.candidates.begin(), s.candidates.end());
+
+            // Evaluate Eq. 1 (+ lambda Eq. 6) for each candidate; keep the best.
+            s.partner.resize(m);
+            s.best_partner.assign(m, -1);
+            double best = INFINITY;
+            int best_i = -1;
+            const auto& self_element = out.elements[element[so]];
+            for (int i : s.candidates) {
+                double c = 0.0;
+                if (key == 0) {  // the centre's own attribute term
+                    double q = index.type[i] != self_element.type ? 1.0 : 0.0;
+                    if (self_element.radius > 0.0 || index.radius[i] > 0.0) {
+                        const double dr = (self_element.radius - index.radius[i]) / params.spacing;
+                        q += dr * dr;
+                    }
+                    c += params.alpha * q;
+                }
+                c += occupancy_term(index, i, positions[so], domain, params);
+                if (c >= best) continue;
+                c += match_neighborhoods(s.out_nb.data(), m, index.neighbors(i), index.neighbor_count(i), params,
+                                         s.match, s.partner.data(), best - c);
+                if (c < best) {
+                    best = c;
+                    best_i = i;
+                    std::copy(s.partner.begin(), s.partner.end(), s.best_partner.begin());
+                }
+            }
+            state.match[so] = best_i;
+            state.cost[so] = best_i >= 0 ? best : 0.0;
+            auto& pairs = state.pairs[so];
+            pairs.clear();
+            if (best_i < 0) continue;
+            const NeighborEntry* in_nb = index.neighbors(best_i);
+            for (int q = 0; q < m; ++q) {
+                const int pi = s.best_partner[q];
+                if (pi < 0) continue;
+                pairs.push_back(Pair{s.out_nb[q].sample, in_nb[pi].sample, in_nb[pi].offset});
+            }
+        }
+    });
+    double energy = 0.0;
+    for (int i = 0; i < n; ++i) energy += state.cost[i];
+    return energy;
+}
+
+}  // namespace tessera::det
