@@ -87,83 +87,99 @@ def sticks_2d():
     """5-sample sticks of length 1.2 in loose rows, mostly horizontal with tilt."""
     rng = random.Random(14)
     els = []
-    centers = dart_throw(rng, [10, 10], 1.0, 80)
+    centers = dart_throw(rng, [10, 10], 0.9, 120)
     placed = []
+    size = [10.0, 10.0]
     for cx, cy in centers:
         ang = rng.gauss(0.0, 0.25)
         length = 1.2
         pts = [[cx + (t / 4 - 0.5) * length * math.cos(ang), cy + (t / 4 - 0.5) * length * math.sin(ang)]
                for t in range(5)]
-        # keep sticks apart: sample-to-sample distance >= 0.35 from earlier sticks
-        if any(math.dist(p, q) < 0.35 for p in pts for s in placed for q in s):
-            continue
-        if any(not (0 <= p[0] <= 10 and 0 <= p[1] <= 10) for p in pts):
+        # keep sticks apart (periodic window): sample distance >= 0.3 from earlier sticks
+        if any(math.sqrt(sum(x * x for x in periodic_delta(p, q, size, (True, True)))) < 0.3
+               for p in pts for s in placed for q in s):
             continue
         placed.append(pts)
         els.append({"type": "stick", "samples": [[r4(x), r4(y)] for x, y in pts]})
     write("sticks_2d", 2, [10, 10], [{"name": "stick", "rigid": True}], els,
-          "Rigid sticks of 5 samples (length 1.2), mostly horizontal, in a 10 x 10 box.")
+          "Rigid sticks of 5 samples (length 1.2), mostly horizontal; centroids in a 10 x 10 window "
+          "of a periodic pattern, so sticks may reach past the window's sides.")
 
 
-def relax_spheres(pts, radius, size, rng, steps=400):
-    """Soft-sphere repulsion in a box: pushes overlapping spheres apart (near-jammed packing)."""
+def periodic_delta(a, b, size, periodic):
+    d = [a[k] - b[k] for k in range(len(a))]
+    for k in range(len(a)):
+        if periodic[k]:
+            d[k] -= size[k] * round(d[k] / size[k])
+    return d
+
+
+def relax_spheres(pts, radius, size, steps=300):
+    """Soft-sphere repulsion in a periodic box until no pair overlaps by more than 1%."""
     d0 = 2 * radius
+    n = len(pts)
     for _ in range(steps):
-        moved = 0.0
-        for i in range(len(pts)):
-            f = [0.0, 0.0, 0.0]
-            for j in range(len(pts)):
-                if i == j:
-                    continue
-                d = [pts[i][k] - pts[j][k] for k in range(3)]
-                dist = math.sqrt(sum(c * c for c in d))
-                if dist < d0 and dist > 1e-9:
+        worst = 0.0
+        forces = [[0.0, 0.0, 0.0] for _ in range(n)]
+        for i in range(n):
+            for j in range(i + 1, n):
+                d = periodic_delta(pts[i], pts[j], size, (True, True, True))
+                dist2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+                if dist2 < d0 * d0:
+                    dist = math.sqrt(dist2) or 1e-9
                     s = (d0 - dist) / dist * 0.5
+                    worst = max(worst, d0 - dist)
                     for k in range(3):
-                        f[k] += d[k] * s
+                        forces[i][k] += d[k] * s
+                        forces[j][k] -= d[k] * s
+        for i in range(n):
             for k in range(3):
-                pts[i][k] = min(size[k] - radius, max(radius, pts[i][k] + f[k]))
-            moved += sum(abs(c) for c in f)
-        if moved < 1e-4:
+                pts[i][k] = (pts[i][k] + forces[i][k]) % size[k]
+        if worst < 0.01 * d0:
             break
     return pts
 
 
 def spheres_3d():
-    """Random close packing of equal spheres in a box (random start + soft repulsion)."""
+    """A random packing of equal spheres, periodic so that the window cuts a stationary pattern."""
     rng = random.Random(15)
-    size = [6.0, 6.0, 6.0]
+    size = [6.2, 6.2, 6.2]
     radius = 0.5
-    n = 230  # packing fraction about 0.56 in the 6^3 box
-    pts = [[rng.uniform(radius, s - radius) for s in size] for _ in range(n)]
-    pts = relax_spheres(pts, radius, size, rng)
+    n = 240  # packing fraction about 0.53
+    pts = [[rng.uniform(0, s) for s in size] for _ in range(n)]
+    pts = relax_spheres(pts, radius, size)
     write("spheres_3d", 3, size, [{"name": "sphere"}],
           [{"type": "sphere", "position": [r4(c) for c in p], "radius": radius} for p in pts],
-          "Near-random close packing of 230 spheres of radius 0.5 in a 6 x 6 x 6 box.")
+          "Dense random packing of 240 spheres of radius 0.5 (packing fraction 0.53), "
+          "observed in a 6.2^3 window of a periodic packing.")
 
 
 def rods_3d():
-    """3D rigid rods of 5 samples lying in layers, random yaw, small pitch (a pile of sticks)."""
+    """Rigid rods of 5 samples lying in layers on a floor: random heading, small tilt.
+    Periodic in x and y, so the window cuts a stationary pattern; z is a real floor and ceiling."""
     rng = random.Random(16)
     size = [8.0, 8.0, 3.0]
+    periodic = (True, True, False)
     els, placed = [], []
     for _ in range(100000):
-        if len(els) >= 90:
+        if len(els) >= 100:
             break
-        c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), rng.uniform(0.2, size[2] - 0.2)]
+        c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), rng.uniform(0.25, size[2] - 0.25)]
         yaw = rng.uniform(0, math.pi)
         pitch = rng.gauss(0, 0.12)
         length = 1.6
         d = [math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), math.sin(pitch)]
         pts = [[c[k] + (t / 4 - 0.5) * length * d[k] for k in range(3)] for t in range(5)]
-        if any(not (0 <= p[k] <= size[k]) for p in pts for k in range(3)):
+        if any(not (0 <= p[2] <= size[2]) for p in pts):
             continue
-        if any(math.dist(p, q) < 0.45 for p in pts for s in placed for q in s):
+        if any(math.sqrt(sum(x * x for x in periodic_delta(p, q, size, periodic))) < 0.45
+               for p in pts for s in placed for q in s):
             continue
         placed.append(pts)
         els.append({"type": "rod", "samples": [[r4(x) for x in p] for p in pts]})
     write("rods_3d", 3, size, [{"name": "rod", "rigid": True}], els,
-          "Rigid rods of 5 samples (length 1.6) with random heading and small tilt in an 8 x 8 x 3 box.")
+          "Rigid rods of 5 samples (length 1.6) with random heading and small tilt, centroids in an "
+          "8 x 8 x 3 window (periodic in x and y, so rods may reach past the window's sides).")
 
 
 if __name__ == "__main__":

@@ -19,8 +19,9 @@ enum class Matching { greedy, hungarian };
 enum class SearchMode { kcoherence, exhaustive };
 
 struct DetOptions {
-    // Neighbourhood radius in the exemplar's units; 0 = automatic:
-    // 2 x the exemplar's mean nearest-neighbour distance between elements (about two rings).
+    // Neighbourhood radius in the exemplar's units; 0 = automatic: the exemplar's
+    // mean nearest-neighbour distance between elements times 2 in 2D (about two
+    // rings) or 1.5 in 3D (the first shell).
     double radius = 0.0;
     // Iterations of search + assign (the paper uses 10).
     int iterations = 10;
@@ -60,6 +61,8 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain,
 
 // The automatic neighbourhood radius used when DetOptions::radius == 0.
 double default_radius(const Exemplar& exemplar);
+// Its factor on the mean nearest-neighbour distance for a dimension (2 or 3).
+double default_radius_factor(int dimension);
 
 // Mean distance from each element (its centroid) to the nearest other element.
 double mean_nearest_neighbor_distance(const Exemplar& exemplar);

@@ -5,7 +5,6 @@
 // masks, mesh volumes, shells) plug in without touching the methods.
 #pragma once
 
-#include <memory>
 #include <string>
 
 #include "tessera/vec.hpp"
@@ -38,6 +37,8 @@ public:
     // |W ∩ (W + d)|: the measure of the domain intersected with its translate by d,
     // used by the translation edge correction of pair correlation estimates.
     double translated_overlap(const Vec3& d) const;
+    // The point of the domain nearest to p (p itself when inside).
+    Vec3 closest_inside(const Vec3& p) const;
     // Distance from p to the domain boundary (positive inside).
     double distance_to_boundary(const Vec3& p) const;
     // The same shape scaled by `factor` about its lower corner.

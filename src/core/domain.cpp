@@ -47,6 +47,12 @@ double Domain::translated_overlap(const Vec3& d) const {
     return m;
 }
 
+Vec3 Domain::closest_inside(const Vec3& p) const {
+    Vec3 q = p;
+    for (int k = 0; k < dimension_; ++k) q[k] = std::clamp(p[k], bounds_.lo[k], bounds_.hi[k]);
+    return q;
+}
+
 double Domain::distance_to_boundary(const Vec3& p) const {
     double dist = INFINITY;
     for (int k = 0; k < dimension_; ++k)

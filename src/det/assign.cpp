@@ -19,7 +19,7 @@ constexpr int cg_max_iterations = 1000;
 // Eq. 4: minimise sum_{s_o} sum_{s'_o in n(s_o)} w |(p(s'_o) - p(s_o)) - p^(s_o, s'_o)|^2
 // + anchor |p - p_current|^2. Solved for the displacement so the tolerance is
 // relative to the mismatch, not to the coordinates' magnitude.
-AssignReport assign_positions(OutputState& state, const Params& params, int threads) {
+AssignReport assign_positions(OutputState& state, const Params& params, int threads, const Domain* domain) {
     Arrangement& out = state.arrangement;
     const int n = static_cast<int>(out.samples.size());
     const int dim = params.dimension;
@@ -43,6 +43,18 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
                 rhs(o, k) -= w * residual[k];
                 rhs(c, k) += w * residual[k];
             }
+        }
+    }
+    // Boundary term (a Theta of Eq. 2): a sample outside the domain is pulled to its
+    // nearest point inside. Unlike clamping after the solve, the pull is balanced
+    // against the neighbours' predictions, so boundary samples do not pile up on the wall.
+    if (domain != nullptr) {
+        for (int i = 0; i < n; ++i) {
+            const Vec3& p = out.samples[i].p;
+            if (domain->inside(p)) continue;
+            const Vec3 target = domain->closest_inside(p);
+            diagonal[i] += params.wall_weight;
+            for (int k = 0; k < dim; ++k) rhs(i, k) += params.wall_weight * (target[k] - p[k]);
         }
     }
     for (int i = 0; i < n; ++i) {
@@ -184,6 +196,8 @@ void snap_rigid_elements(OutputState& state, const InputIndex& index, int dimens
     });
 }
 
+}  // namespace
+
 // Elements that left the box are translated back (as a whole, so shapes are kept).
 void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
     const Box b = domain.bounds();
@@ -205,8 +219,6 @@ void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
     }
 }
 
-}  // namespace
-
 void update_poses(OutputState& state, const InputIndex&, int dimension) {
     Arrangement& out = state.arrangement;
     out.update_positions();
@@ -216,10 +228,9 @@ void update_poses(OutputState& state, const InputIndex&, int dimension) {
 
 AssignReport assign_step(OutputState& state, const InputIndex& index, const Domain& domain, const Params& params,
                          int threads) {
-    AssignReport report = assign_positions(state, params, threads);
+    AssignReport report = assign_positions(state, params, threads, &domain);
     assign_attributes(state, index, params, threads);
     snap_rigid_elements(state, index, params.dimension, threads);
-    keep_inside_domain(state.arrangement, domain, params.dimension);
     update_poses(state, index, params.dimension);
     return report;
 }

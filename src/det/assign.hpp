@@ -1,7 +1,7 @@
 // Assignment step (section 4.3): positions by least squares over all predicted
-// offsets (Eq. 3, 4), attributes by voting (Eq. 5), then each rigid element is
-// snapped to the best-fitting rigid copy of the input element it voted for, and
-// elements are kept inside the output domain.
+// offsets (Eq. 3, 4) plus a boundary term, attributes by voting (Eq. 5), then each
+// rigid element is snapped to the best-fitting rigid copy of the input element it
+// voted for.
 #pragma once
 
 #include "det/model.hpp"
@@ -17,7 +17,13 @@ AssignReport assign_step(OutputState& state, const InputIndex& index, const Doma
                          int threads);
 
 // The position part alone (Eq. 4 as a sparse positive-definite solve).
-AssignReport assign_positions(OutputState& state, const Params& params, int threads);
+// With a domain, samples outside it are pulled back by the boundary term.
+AssignReport assign_positions(OutputState& state, const Params& params, int threads,
+                              const Domain* domain = nullptr);
+
+// Translates elements that still leave the domain back inside, as a whole (run once
+// at the end of synthesis so the result lies in the domain).
+void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension);
 
 // Best rigid motion (rotation R, translation t) minimising sum |R a_k + t - b_k|^2
 // (Kabsch; no reflections; rotation about z only when dimension == 2).

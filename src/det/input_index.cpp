@@ -50,10 +50,11 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
         p.spacing = std::pow(exemplar.domain.measure() / std::max<size_t>(1, exemplar.elements.size()),
                              1.0 / exemplar.dimension);
     }
-    p.radius = options.radius > 0.0 ? options.radius : 2.0 * p.spacing;
+    p.radius = options.radius > 0.0 ? options.radius : default_radius_factor(exemplar.dimension) * p.spacing;
     // A neighbour displaced by a whole spacing from its prediction is as good as
-    // unmatched; the cap bounds the cost of boundary and density mismatches.
-    const double cap = std::min(p.spacing, p.radius);
+    // unmatched: pair costs are truncated there (robust to boundary and density
+    // mismatches), and input neighbourhoods reach that far beyond r.
+    const double cap = p.spacing;
     p.cap2 = cap * cap;
     p.input_radius = p.radius + cap;
     p.alpha = options.alpha >= 0.0 ? options.alpha : p.spacing * p.spacing;
@@ -100,16 +101,21 @@ void build_similarity_sets(InputIndex& index, const Params& params, int k, int t
     const int nthreads = core::resolve_threads(threads);
     std::vector<MatchScratch> scratch(nthreads);
     std::vector<std::vector<std::pair<double, int>>> ranked(nthreads);
+    std::vector<std::vector<NeighborEntry>> own(nthreads);
+    const double r2 = params.radius * params.radius;
     core::parallel_for(n, nthreads, [&](int begin, int end, int t) {
         for (int i = begin; i < end; ++i) {
             // n(s_i) within r plays the output neighbourhood; candidates use their full extent.
-            const NeighborEntry* own = index.neighbors(i);
-            const int m = index.nb_within_r[i];
+            auto& mine = own[t];
+            mine.clear();
+            for (int q = 0; q < index.neighbor_count(i); ++q)
+                if (squared_norm(index.neighbors(i)[q].offset) <= r2) mine.push_back(index.neighbors(i)[q]);
+            const int m = static_cast<int>(mine.size());
             auto& r = ranked[t];
             r.clear();
             for (int j : index.by_key[index.key[i]]) {
                 if (j == i) continue;
-                double c = match_neighborhoods(own, m, index.neighbors(j), index.neighbor_count(j), params,
+                double c = match_neighborhoods(mine.data(), m, index.neighbors(j), index.neighbor_count(j), params,
                                                scratch[t], nullptr, INFINITY);
                 if (index.key[i] == 0 && index.type[i] != index.type[j]) c += params.alpha;
                 r.emplace_back(c, j);
@@ -151,16 +157,14 @@ InputIndex build_input_index(const Exemplar& exemplar, const Params& params, int
 
     index.grid.build(index.positions, params.input_radius, params.dimension);
     index.nb_start.assign(n + 1, 0);
-    index.nb_within_r.assign(n, 0);
     std::vector<NeighborEntry> entries;
     std::vector<std::pair<double, int>> scratch;
     for (int i = 0; i < n; ++i) {
         gather_neighbors(index.grid, index.positions, index.positions[i], i, params.input_radius, params.dimension,
                          index.key, index.type, index.element, index.radius, entries, scratch, max_neighbors * 2);
-        int within = 0;
-        for (const auto& e : entries)
-            if (squared_norm(e.offset) <= params.radius * params.radius) ++within;
-        index.nb_within_r[i] = within;  // entries are sorted by distance, so these come first
+        // Key-major order lets the pairing find an output sample's possible partners by binary search.
+        std::stable_sort(entries.begin(), entries.end(),
+                         [](const NeighborEntry& a, const NeighborEntry& b) { return a.match_key < b.match_key; });
         index.nb.insert(index.nb.end(), entries.begin(), entries.end());
         index.nb_start[i + 1] = static_cast<int>(index.nb.size());
     }

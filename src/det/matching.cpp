@@ -1,19 +1,21 @@
 // Greedy and exact pairing of neighbourhood samples (Eq. 1, section 3.2).
 #include "det/matching.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace tessera::det {
 
 namespace {
 
-// Best free input partner of output entry o, or -1 if none is cheaper than cap2.
-inline int best_free_partner(const NeighborEntry& o, const NeighborEntry* in, int n, const Params& params,
+// Cheapest free input partner of output entry o among in[lo, hi) (its match
+// key's range), or -1 if there is none.
+inline int best_free_partner(const NeighborEntry& o, const NeighborEntry* in, int lo, int hi, const Params& params,
                              const std::vector<char>& taken, double& cost) {
     int best = -1;
-    cost = params.cap2;
-    for (int i = 0; i < n; ++i) {
-        if (taken[i] || in[i].match_key != o.match_key) continue;
+    cost = INFINITY;
+    for (int i = lo; i < hi; ++i) {
+        if (taken[i]) continue;
         const double c = pair_cost(o, in[i], params);
         if (c < cost) cost = c, best = i;
     }
@@ -24,42 +26,60 @@ inline int best_free_partner(const NeighborEntry& o, const NeighborEntry* in, in
 
 // The paper's greedy heuristic: take the globally cheapest remaining pair, remove
 // both samples, repeat. Implemented lazily: each output entry caches its cheapest
-// free partner; when the globally cheapest cached pair is still free it is the
-// true cheapest remaining pair (costs only grow as inputs are taken), otherwise
-// that entry alone is rescanned. Conflicts are rare, so this is ~m*n, not m*n*log.
+// free partner in a min-heap; when the top's partner is still free it is the true
+// cheapest remaining pair (costs only grow as inputs are taken), otherwise that
+// entry alone is rescanned and pushed back. Conflicts are rare, so the cost is
+// about one scan of each output entry's key range plus m log m heap operations.
 double match_greedy(const NeighborEntry* out, int m, const NeighborEntry* in, int n, const Params& params,
                     MatchScratch& s, int* partner, double bound) {
-    s.best_cost.resize(m);
     s.best_input.resize(m);
     s.taken.assign(n, 0);
-    for (int o = 0; o < m; ++o) s.best_input[o] = best_free_partner(out[o], in, n, params, s.taken, s.best_cost[o]);
-    double total = 0.0;
-    int remaining = m;
-    // Entries still to settle are [0, remaining) of this permutation.
-    int order_buf[512];
-    std::vector<int> order_heap;
-    int* order = order_buf;
-    if (m > 512) {
-        order_heap.resize(m);
-        order = order_heap.data();
-    }
-    for (int o = 0; o < m; ++o) order[o] = o;
-    while (remaining > 0) {
-        int pick = 0;
-        for (int k = 1; k < remaining; ++k) {
-            const int a = order[k], b = order[pick];
-            if (s.best_cost[a] < s.best_cost[b] || (s.best_cost[a] == s.best_cost[b] && a < b)) pick = k;
+    s.range_lo.resize(m);
+    s.range_hi.resize(m);
+    s.heap.clear();
+    // Both lists are sorted by match key: one merge walk finds every output
+    // entry's range of possible partners.
+    // Each entry's final cost is at least its first cheapest-free cost (costs only
+    // grow as inputs are taken), so the running sum of those is a lower bound.
+    double lower_bound = 0.0;
+    int lo = 0;
+    for (int o = 0; o < m; ++o) {
+        const int key = out[o].match_key;
+        if (o > 0 && key == out[o - 1].match_key) {
+            s.range_lo[o] = s.range_lo[o - 1];
+            s.range_hi[o] = s.range_hi[o - 1];
+        } else {
+            while (lo < n && in[lo].match_key < key) ++lo;
+            int hi = lo;
+            while (hi < n && in[hi].match_key == key) ++hi;
+            s.range_lo[o] = lo;
+            s.range_hi[o] = hi;
+            lo = hi;
         }
-        const int o = order[pick];
+        double cost;
+        s.best_input[o] = best_free_partner(out[o], in, s.range_lo[o], s.range_hi[o], params, s.taken, cost);
+        s.heap.emplace_back(cost, o);
+        lower_bound += std::min(cost, params.cap2);
+        if (lower_bound >= bound) return lower_bound;  // cannot beat the caller's best
+    }
+    const auto later = [](const std::pair<double, int>& a, const std::pair<double, int>& b) { return a > b; };
+    std::make_heap(s.heap.begin(), s.heap.end(), later);
+    double total = 0.0;
+    while (!s.heap.empty()) {
+        std::pop_heap(s.heap.begin(), s.heap.end(), later);
+        const auto [cost, o] = s.heap.back();
+        s.heap.pop_back();
         const int i = s.best_input[o];
         if (i >= 0 && s.taken[i]) {  // stale: its partner went to a cheaper pair
-            s.best_input[o] = best_free_partner(out[o], in, n, params, s.taken, s.best_cost[o]);
+            double fresh;
+            s.best_input[o] = best_free_partner(out[o], in, s.range_lo[o], s.range_hi[o], params, s.taken, fresh);
+            s.heap.emplace_back(fresh, o);
+            std::push_heap(s.heap.begin(), s.heap.end(), later);
             continue;
         }
-        total += i >= 0 ? s.best_cost[o] : params.cap2;
+        total += std::min(cost, params.cap2);  // truncated: one bad pair costs at most cap2
         if (i >= 0) s.taken[i] = 1;
         if (partner) partner[o] = i;
-        order[pick] = order[--remaining];
         if (total >= bound) return total;  // cannot beat the caller's best
     }
     return total;
@@ -78,8 +98,8 @@ double match_hungarian(const NeighborEntry* out, int m, const NeighborEntry* in,
         for (int c = 0; c < cols; ++c) {
             double v = params.cap2;
             if (c < n) {
-                v = in[c].match_key == out[o].match_key ? pair_cost(out[o], in[c], params) : inf;
-                if (v > params.cap2) v = inf;  // never pair beyond the cap
+                v = in[c].match_key == out[o].match_key ? std::min(pair_cost(out[o], in[c], params), params.cap2)
+                                                         : inf;
             }
             s.matrix[static_cast<size_t>(o) * cols + c] = v;
         }

@@ -28,6 +28,8 @@ struct Params {
     // of conjugate-gradient iterations whatever the output size; the next
     // iterations remove its small bias.
     double anchor_weight = 0.01;
+    // Weight of the pull of samples outside the domain back to its boundary.
+    double wall_weight = 8.0;
     Matching matching = Matching::greedy;
 };
 
@@ -49,8 +51,9 @@ struct NeighborEntry {
 };
 
 // The exemplar, prepared for search: per-sample attributes, neighbourhoods
-// within Params::input_radius (sorted by distance, the first `within_r` are
-// inside r), a grid for nearest-compatible lookups, and similarity sets.
+// within Params::input_radius (sorted by match key, then distance, so that the
+// pairing scans only entries an output sample may pair with), a grid for
+// nearest-compatible lookups, and similarity sets.
 struct InputIndex {
     const Exemplar* exemplar = nullptr;
     std::vector<Vec3> positions;
@@ -58,7 +61,6 @@ struct InputIndex {
     std::vector<double> radius;
     std::vector<int> nb_start;            // CSR offsets into nb, size samples + 1
     std::vector<NeighborEntry> nb;
-    std::vector<int> nb_within_r;         // count of entries of each sample within r
     std::vector<std::vector<int>> by_key; // samples of each key, index order
     core::SpatialGrid grid;
     std::vector<int> sim_start, sim;      // k-coherence similarity sets (CSR)

@@ -28,7 +28,9 @@ double occupancy_term(const InputIndex& index, int i, const Vec3& center, const 
     if (params.lambda <= 0.0) return 0.0;
     const NeighborEntry* nb = index.neighbors(i);
     double sum = 0.0;
-    for (int q = 0; q < index.nb_within_r[i]; ++q) {
+    const double r2 = params.radius * params.radius;
+    for (int q = 0; q < index.neighbor_count(i); ++q) {
+        if (squared_norm(nb[q].offset) > r2) continue;
         const double c = domain.occupancy(center + nb[q].offset);
         sum += (1.0 - c) * (1.0 - c);
     }
@@ -81,6 +83,9 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
         for (int so = begin; so < end; ++so) {
             gather_neighbors(grid, positions, positions[so], so, params.radius, params.dimension, state.key, type,
                              element, radius, s.out_nb, s.sort_buf, max_neighbors);
+            std::stable_sort(s.out_nb.begin(), s.out_nb.end(), [](const NeighborEntry& a, const NeighborEntry& b) {
+                return a.match_key < b.match_key;
+            });
             const int m = static_cast<int>(s.out_nb.size());
             const int key = state.key[so];
 
@@ -106,8 +111,13 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
                 if (s.candidates.empty())
                     for (int i : index.by_key[key]) add_candidate(s, i);
             }
-            // Deterministic order whatever produced them.
+            // Deterministic order whatever produced them; the previous match goes first
+            // so that its cost bounds (and cuts short) the evaluation of the others.
             std::sort(s.candidates.begin(), s.candidates.end());
+            if (!previous.empty() && previous[so] >= 0) {
+                auto it = std::find(s.candidates.begin(), s.candidates.end(), previous[so]);
+                if (it != s.candidates.end()) std::rotate(s.candidates.begin(), it, it + 1);
+            }
 
             // Evaluate Eq. 1 (+ lambda Eq. 6) for each candidate; keep the best.
             s.partner.resize(m);

@@ -62,6 +62,8 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         if (!assigned.cg_converged) ++stats.solver_bound_hits;
         report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
     }
+    det::keep_inside_domain(state.arrangement, domain, params.dimension);
+    det::update_poses(state, index, params.dimension);
     // Energy of the result itself (a search without assignment).
     stats.final_energy = det::search_step(state, index, domain, params, search);
     stats.radius = params.radius;

@@ -32,6 +32,13 @@ double mean_nearest_neighbor_distance(const Exemplar& exemplar) {
     return counted ? sum / counted : 0.0;
 }
 
-double default_radius(const Exemplar& exemplar) { return 2.0 * mean_nearest_neighbor_distance(exemplar); }
+// About two rings in 2D (the second hexagonal ring lies at 1.73 spacings); the
+// first shell in 3D, where a second shell would triple the neighbourhood's size
+// (and the matching cost) for little gain.
+double default_radius_factor(int dimension) { return dimension == 3 ? 1.5 : 2.0; }
+
+double default_radius(const Exemplar& exemplar) {
+    return default_radius_factor(exemplar.dimension) * mean_nearest_neighbor_distance(exemplar);
+}
 
 }  // namespace tessera
