@@ -1,0 +1,114 @@
+// io/files.cpp — the file-system side of io: load()/save() by extension, whole-file
+// reads, and atomic writes (temporary file in the target directory + rename), so
+// that a failed or interrupted run never leaves a partial output behind
+// (DESIGN.md, "Formats"). Parsing and serialising live in the *_format.cpp files.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <thread>
+
+#include "io/io_util.hpp"
+#include "tessera/error.hpp"
+#include "tessera/io.hpp"
+#include "tessera/render.hpp"
+
+namespace tessera {
+
+using namespace io_detail;
+
+namespace {
+
+[[noreturn]] void fail_io(const std::string& what, const std::string& path, int error_number) {
+    throw Error(ErrorKind::io, "cannot " + what + " " + path + ": " + std::strerror(error_number));
+}
+
+// A name no other writer uses at the same time: the pid separates processes, the
+// thread id separates threads of one process writing the same path.
+std::string temporary_name(const std::string& path) {
+    const size_t thread_hash = std::hash<std::thread::id>{}(std::this_thread::get_id());
+    return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(thread_hash);
+}
+
+// Writes all of `content` to a new file and flushes it to disk; returns errno or 0.
+int write_whole_file(const std::string& file_name, const std::string& content) {
+    std::FILE* file = std::fopen(file_name.c_str(), "wb");
+    if (!file) return errno;
+    int error_number = 0;
+    if (!content.empty() && std::fwrite(content.data(), 1, content.size(), file) != content.size())
+        error_number = errno ? errno : EIO;
+    // fsync before rename: otherwise a crash can leave the new name pointing at an empty file.
+    if (!error_number && (std::fflush(file) != 0 || ::fsync(::fileno(file)) != 0)) error_number = errno;
+    if (std::fclose(file) != 0 && !error_number) error_number = errno;
+    return error_number;
+}
+
+}  // namespace
+
+void write_file_atomic(const std::string& path, const std::string& content) {
+    if (path.empty()) throw Error(ErrorKind::io, "cannot write a file with an empty name");
+    const std::string temporary = temporary_name(path);
+    errno = 0;
+    const int error_number = write_whole_file(temporary, content);
+    if (error_number != 0) {
+        std::remove(temporary.c_str());
+        fail_io("write", path, error_number);
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const int rename_error = errno;
+        std::remove(temporary.c_str());
+        fail_io("write", path, rename_error);
+    }
+}
+
+std::string read_file(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) fail_io("read", path, errno);
+    std::string content;
+    char buffer[1 << 16];
+    size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) content.append(buffer, n);
+    // A directory opens fine on Linux and fails here with EISDIR.
+    const bool failed = std::ferror(file) != 0;
+    const int error_number = errno;
+    std::fclose(file);
+    if (failed) fail_io("read", path, error_number ? error_number : EIO);
+    return content;
+}
+
+Exemplar load(const std::string& path, const LoadOptions& options) {
+    const std::string extension = extension_of(path);
+    if (extension != ".json" && extension != ".csv")
+        throw Error(ErrorKind::io, "cannot load " + path + ": unsupported extension '" + extension +
+                                       "' (supported: .json, .csv)");
+    const std::string text = read_file(path);
+    if (extension == ".json") return parse_json(text, path);
+    return parse_csv(text, path, options);
+}
+
+namespace {
+
+void save_by_extension(const Exemplar& data, const std::string& path, const RunStats* stats) {
+    const std::string extension = extension_of(path);
+    if (extension == ".json") return write_file_atomic(path, to_json(data, stats));
+    if (extension == ".csv") return write_file_atomic(path, to_csv(data));
+    if (extension == ".ply") return write_file_atomic(path, to_ply(data));
+    if (extension == ".png" || extension == ".svg") return render_to_file(data, path);
+    throw Error(ErrorKind::option, "cannot save " + path + ": unsupported extension '" + extension +
+                                       "' (supported: .json, .csv, .ply, .png, .svg)");
+}
+
+}  // namespace
+
+void save(const Exemplar& data, const std::string& path) {
+    save_by_extension(data, path, nullptr);
+}
+
+void save(const Arrangement& data, const std::string& path) {
+    save_by_extension(data, path, &data.stats);
+}
+
+}  // namespace tessera

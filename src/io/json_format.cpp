@@ -1,0 +1,440 @@
+// io/json_format.cpp — the native JSON format ("format": "tessera", version 1),
+// documented field by field in docs/format.md. It is the one format that carries
+// everything in the data model (types and their flags, domain, pose, attributes,
+// ids, locks, time stamps), so a save + load through it is lossless.
+//
+// The reader is strict: unknown keys, wrong types and out-of-range values are
+// errors naming the file and the JSON path ("elements[3].radius"), because a
+// silently ignored typo ("raduis") would quietly change a synthesis result.
+// The writer puts one element per line: readable, diffable, and still a plain
+// JSON document; doubles are written in the shortest form that reads back exactly.
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "io/io_util.hpp"
+#include "tessera/error.hpp"
+#include "tessera/io.hpp"
+
+namespace tessera {
+
+using namespace io_detail;
+
+namespace {
+
+using Json = nlohmann::json;
+using OrderedJson = nlohmann::ordered_json;
+
+constexpr int format_version = 1;
+
+class JsonReader {
+public:
+    explicit JsonReader(const std::string& source) : source_(source) {}
+
+    Exemplar read(const std::string& text) {
+        const Json doc = parse(text);
+        if (!doc.is_object()) fail("", "the document must be a JSON object");
+        check_keys(doc,
+                   {"format", "version", "dimension", "domain", "types", "attributes", "elements", "stats", "description"},
+                   "");
+        read_header(doc);
+        Exemplar ex;
+        ex.dimension = dimension_;
+        ex.domain = read_domain(require(doc, "domain", ""));
+        read_types(doc, ex);
+        read_attribute_names(doc, ex);
+        read_elements(require(doc, "elements", ""), ex);
+        ex.update_positions();
+        ex.validate(source_);
+        return ex;
+    }
+
+private:
+    std::string source_;
+    int dimension_ = 2;
+    bool types_declared_ = false;
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        fail_input(source_, 0, where.empty() ? what : where + ": " + what);
+    }
+
+    Json parse(const std::string& text) const {
+        try {
+            return Json::parse(text);
+        } catch (const Json::exception& e) {  // parse_error, or out_of_range for 1e400
+            // Drop nlohmann's "[json.exception.parse_error.101] " tag; keep "parse error at line L, column C:
+            // ...".
+            std::string message = e.what();
+            const size_t tag_end = message.find("] ");
+            if (message.rfind("[json.exception", 0) == 0 && tag_end != std::string::npos)
+                message = message.substr(tag_end + 2);
+            fail("", "invalid JSON: " + message);
+        }
+    }
+
+    static std::string member(const std::string& where, const std::string& key) {
+        return where.empty() ? key : where + "." + key;
+    }
+
+    void check_keys(const Json& object, std::initializer_list<const char*> allowed,
+                    const std::string& where) const {
+        for (const auto& item : object.items()) {
+            const bool known = std::any_of(allowed.begin(), allowed.end(),
+                                           [&](const char* key) { return item.key() == key; });
+            if (!known) fail(where, "unknown key '" + item.key() + "'");
+        }
+    }
+
+    const Json& require(const Json& object, const char* key, const std::string& where) const {
+        const auto it = object.find(key);
+        if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
+        return *it;
+    }
+
+    double number(const Json& value, const std::string& where) const {
+        if (!value.is_number()) fail(where, "must be a number, got " + value.dump());
+        const double x = value.get<double>();
+        if (!std::isfinite(x)) fail(where, "is NaN or infinite");
+        return x;
+    }
+
+    std::string string(const Json& value, const std::string& where) const {
+        if (!value.is_string()) fail(where, "must be a string, got " + value.dump());
+        return value.get<std::string>();
+    }
+
+    bool boolean(const Json& value, const std::string& where) const {
+        if (!value.is_boolean()) fail(where, "must be true or false, got " + value.dump());
+        return value.get<bool>();
+    }
+
+    long long integer(const Json& value, const std::string& where) const {
+        if (!value.is_number_integer()) fail(where, "must be an integer, got " + value.dump());
+        return value.get<long long>();
+    }
+
+    const Json& array(const Json& value, const std::string& where) const {
+        if (!value.is_array()) fail(where, "must be an array, got " + value.dump());
+        return value;
+    }
+
+    // A point of `dimension_` coordinates.
+    Vec3 point(const Json& value, const std::string& where) const {
+        if (!value.is_array() || value.size() != static_cast<size_t>(dimension_))
+            fail(where,
+                 "must be an array of " + std::to_string(dimension_) + " numbers, got " + value.dump());
+        Vec3 p;
+        for (int k = 0; k < dimension_; ++k) {
+            const Json& c = value[static_cast<size_t>(k)];
+            if (!c.is_number()) fail(where, "must be an array of numbers, got " + value.dump());
+            p[k] = c.get<double>();
+            if (!std::isfinite(p[k])) fail(where, "coordinate is NaN or infinite");
+        }
+        return p;
+    }
+
+    void read_header(const Json& doc) {
+        const Json& format = require(doc, "format", "");
+        if (!format.is_string() || format.get<std::string>() != "tessera")
+            fail("", "not a tessera file (\"format\" must be \"tessera\", got " + format.dump() + ")");
+        const Json& version = require(doc, "version", "");
+        if (!version.is_number_integer() || version.get<long long>() != format_version)
+            fail("", "unsupported version " + version.dump() + " (this build reads version " +
+                         std::to_string(format_version) + ")");
+        const long long dimension = integer(require(doc, "dimension", ""), "dimension");
+        if (dimension != 2 && dimension != 3)
+            fail("dimension", "must be 2 or 3, got " + std::to_string(dimension));
+        dimension_ = static_cast<int>(dimension);
+    }
+
+    Domain read_domain(const Json& value) const {
+        const std::string where = "domain";
+        if (!value.is_object()) fail(where, "must be an object, got " + value.dump());
+        check_keys(value, {"type", "min", "max"}, where);
+        const std::string type = string(require(value, "type", where), member(where, "type"));
+        if (type != "box")
+            fail(member(where, "type"), "unsupported domain type '" + type + "' (supported: box)");
+        const Vec3 lo = point(require(value, "min", where), member(where, "min"));
+        const Vec3 hi = point(require(value, "max", where), member(where, "max"));
+        try {
+            return Domain::box(lo, hi, dimension_);
+        } catch (const Error& e) {
+            throw Error(e.kind(), source_ + ": " + where + ": " + e.what());
+        }
+    }
+
+    void read_types(const Json& doc, Exemplar& ex) {
+        const auto it = doc.find("types");
+        if (it == doc.end()) return;
+        types_declared_ = true;
+        const Json& types = array(*it, "types");
+        for (size_t i = 0; i < types.size(); ++i) {
+            const std::string where = "types[" + std::to_string(i) + "]";
+            const Json& t = types[i];
+            if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
+            check_keys(t, {"name", "rigid", "floor", "mesh"}, where);
+            ElementType type;
+            type.name = string(require(t, "name", where), member(where, "name"));
+            if (type.name.empty()) fail(member(where, "name"), "must not be empty");
+            if (ex.find_type(type.name) >= 0)
+                fail(member(where, "name"), "type '" + type.name + "' is defined twice");
+            if (t.contains("rigid")) type.rigid = boolean(t["rigid"], member(where, "rigid"));
+            if (t.contains("floor")) type.floor = boolean(t["floor"], member(where, "floor"));
+            if (t.contains("mesh")) type.mesh = string(t["mesh"], member(where, "mesh"));
+            ex.types.push_back(std::move(type));
+        }
+    }
+
+    void read_attribute_names(const Json& doc, Exemplar& ex) const {
+        const auto it = doc.find("attributes");
+        if (it == doc.end()) return;
+        const Json& names = array(*it, "attributes");
+        for (size_t i = 0; i < names.size(); ++i) {
+            const std::string where = "attributes[" + std::to_string(i) + "]";
+            const std::string name = string(names[i], where);
+            if (name.empty()) fail(where, "must not be empty");
+            if (std::find(ex.attribute_names.begin(), ex.attribute_names.end(), name) !=
+                ex.attribute_names.end())
+                fail(where, "attribute '" + name + "' is named twice");
+            ex.attribute_names.push_back(name);
+        }
+    }
+
+    int element_type(const Json& e, const std::string& where, Exemplar& ex) const {
+        const auto it = e.find("type");
+        if (it == e.end()) {
+            // One declared type, or none declared at all: the type is unambiguous.
+            if (types_declared_ && ex.types.size() == 1) return 0;
+            if (!types_declared_) return ex.type_index("default");
+            fail(where, "missing \"type\" (required when \"types\" declares several types)");
+        }
+        const std::string name = string(*it, member(where, "type"));
+        if (name.empty()) fail(member(where, "type"), "must not be empty");
+        if (!types_declared_) return ex.type_index(name);
+        const int type = ex.find_type(name);
+        if (type < 0) fail(where, "unknown element type '" + name + "'");
+        return type;
+    }
+
+    std::vector<Vec3> element_samples(const Json& e, const std::string& where) const {
+        const bool has_position = e.contains("position");
+        const bool has_samples = e.contains("samples");
+        if (has_position == has_samples)
+            fail(where, "needs exactly one of \"position\" (one sample) and \"samples\" (several)");
+        if (has_position) return {point(e["position"], member(where, "position"))};
+        const Json& samples = array(e["samples"], member(where, "samples"));
+        if (samples.empty()) fail(member(where, "samples"), "must not be empty");
+        std::vector<Vec3> points;
+        for (size_t s = 0; s < samples.size(); ++s)
+            points.push_back(point(samples[s], member(where, "samples[" + std::to_string(s) + "]")));
+        return points;
+    }
+
+    Quat element_orientation(const Json& e, const std::string& where) const {
+        std::optional<double> angle;
+        if (e.contains("angle")) angle = number(e["angle"], member(where, "angle"));
+        std::optional<Quat> q;
+        if (e.contains("orientation")) {
+            const std::string at = member(where, "orientation");
+            const Json& value = e["orientation"];
+            if (!value.is_array() || value.size() != 4)
+                fail(at, "must be an array of 4 numbers [w, x, y, z], got " + value.dump());
+            q = Quat{number(value[0], at), number(value[1], at), number(value[2], at), number(value[3], at)};
+        }
+        Quat result;
+        if (const auto problem = resolve_orientation(q, angle, dimension_, result)) fail(where, *problem);
+        return result;
+    }
+
+    void element_time(const Json& e, const std::string& where, int index, Exemplar& ex) const {
+        if (!e.contains("time")) return;
+        const std::string at = member(where, "time");
+        const Element& element = ex.elements[index];
+        const Json& value = e["time"];
+        if (value.is_array()) {
+            if (value.size() != static_cast<size_t>(element.sample_count))
+                fail(at,
+                     "must be one number, or one per sample (" + std::to_string(element.sample_count) + ")");
+            for (int s = 0; s < element.sample_count; ++s)
+                ex.samples[element.first_sample + s].time = number(value[static_cast<size_t>(s)], at);
+            return;
+        }
+        const double t = number(value, at);
+        for (int s = 0; s < element.sample_count; ++s) ex.samples[element.first_sample + s].time = t;
+    }
+
+    void read_elements(const Json& value, Exemplar& ex) {
+        const Json& elements = array(value, "elements");
+        std::set<std::uint64_t> ids;
+        for (size_t i = 0; i < elements.size(); ++i) {
+            const std::string where = "elements[" + std::to_string(i) + "]";
+            const Json& e = elements[i];
+            if (!e.is_object()) fail(where, "must be an object, got " + e.dump());
+            check_keys(e,
+                       {"id", "type", "position", "samples", "radius", "angle", "orientation", "scale",
+                        "attributes", "locked", "time"},
+                       where);
+            const int type = element_type(e, where, ex);
+            double radius = 0.0;
+            if (e.contains("radius")) {
+                radius = number(e["radius"], member(where, "radius"));
+                if (radius < 0.0) fail(member(where, "radius"), "must be >= 0 (0 means no radius)");
+            }
+            const int index = ex.add_element(type, element_samples(e, where), radius);
+            Element& element = ex.elements[index];
+            if (e.contains("id")) {
+                const Json& id = e["id"];
+                if (!id.is_number_unsigned())
+                    fail(member(where, "id"), "must be a non-negative integer, got " + id.dump());
+                element.id = id.get<std::uint64_t>();
+            }
+            if (!ids.insert(element.id).second)
+                fail(where, "duplicate element id " + std::to_string(element.id));
+            element.orientation = element_orientation(e, where);
+            if (e.contains("scale")) {
+                element.scale = number(e["scale"], member(where, "scale"));
+                if (!(element.scale > 0.0)) fail(member(where, "scale"), "must be > 0");
+            }
+            if (e.contains("locked")) element.locked = boolean(e["locked"], member(where, "locked"));
+            read_element_attributes(e, where, ex, element);
+            element_time(e, where, index, ex);
+        }
+    }
+
+    void read_element_attributes(const Json& e, const std::string& where, const Exemplar& ex,
+                                 Element& element) const {
+        const size_t expected = ex.attribute_names.size();
+        const auto it = e.find("attributes");
+        if (it == e.end()) {
+            if (expected > 0)
+                fail(where, "missing \"attributes\" (" + std::to_string(expected) +
+                                " values, one per name in the "
+                                "top-level \"attributes\")");
+            return;
+        }
+        const std::string at = member(where, "attributes");
+        if (!it->is_array() || it->size() != expected)
+            fail(at, "must be an array of " + std::to_string(expected) +
+                         " numbers (one per name in the top-level \"attributes\"), got " + it->dump());
+        for (const Json& a : *it) element.attributes.push_back(number(a, at));
+    }
+};
+
+// ---- writing ---------------------------------------------------------------
+
+OrderedJson point_json(const Vec3& p, int dimension) {
+    OrderedJson out = OrderedJson::array();
+    for (int k = 0; k < dimension; ++k) out.push_back(p[k]);
+    return out;
+}
+
+OrderedJson element_json(const Exemplar& data, const Element& e) {
+    OrderedJson out;
+    out["id"] = e.id;
+    out["type"] = data.types.at(static_cast<size_t>(e.type)).name;
+    if (e.sample_count == 1) {
+        out["position"] = point_json(data.samples[e.first_sample].p, data.dimension);
+    } else {
+        OrderedJson samples = OrderedJson::array();
+        for (int s = 0; s < e.sample_count; ++s)
+            samples.push_back(point_json(data.samples[e.first_sample + s].p, data.dimension));
+        out["samples"] = std::move(samples);
+    }
+    if (e.radius > 0.0) out["radius"] = e.radius;
+    if (data.dimension == 2) out["angle"] = e.orientation.angle_z();
+    out["orientation"] = {e.orientation.w, e.orientation.x, e.orientation.y, e.orientation.z};
+    out["scale"] = e.scale;
+    if (!e.attributes.empty()) out["attributes"] = e.attributes;
+    if (e.locked) out["locked"] = true;
+    // Time: one number when all samples share it (the usual case), else one per sample.
+    bool uniform = true, all_zero = true;
+    for (int s = 0; s < e.sample_count; ++s) {
+        const double t = data.samples[e.first_sample + s].time;
+        uniform = uniform && t == data.samples[e.first_sample].time;
+        all_zero = all_zero && t == 0.0;
+    }
+    if (!all_zero) {
+        if (uniform) {
+            out["time"] = data.samples[e.first_sample].time;
+        } else {
+            OrderedJson times = OrderedJson::array();
+            for (int s = 0; s < e.sample_count; ++s) times.push_back(data.samples[e.first_sample + s].time);
+            out["time"] = std::move(times);
+        }
+    }
+    return out;
+}
+
+OrderedJson stats_json(const RunStats& stats) {
+    OrderedJson out;
+    out["method"] = stats.method;
+    out["energy"] = stats.energy;
+    out["final_energy"] = stats.final_energy;
+    out["radius"] = stats.radius;
+    out["solver_bound_hits"] = stats.solver_bound_hits;
+    out["iteration_seconds"] = stats.iteration_seconds;
+    out["init_seconds"] = stats.init_seconds;
+    out["total_seconds"] = stats.total_seconds;
+    out["threads"] = stats.threads;
+    out["seed"] = stats.seed;
+    return out;
+}
+
+// Writes `items` as a JSON array with one compact item per line.
+void append_array(std::string& out, const std::vector<OrderedJson>& items) {
+    if (items.empty()) {
+        out += "[]";
+        return;
+    }
+    out += "[\n";
+    for (size_t i = 0; i < items.size(); ++i) {
+        out += "    " + items[i].dump();
+        out += i + 1 < items.size() ? ",\n" : "\n";
+    }
+    out += "  ]";
+}
+
+}  // namespace
+
+Exemplar parse_json(const std::string& text, const std::string& source) {
+    return JsonReader(source).read(text);
+}
+
+std::string to_json(const Exemplar& data, const RunStats* stats) {
+    const Box& box = data.domain.bounds();
+    OrderedJson domain;
+    domain["type"] = "box";
+    domain["min"] = point_json(box.lo, data.dimension);
+    domain["max"] = point_json(box.hi, data.dimension);
+
+    std::vector<OrderedJson> types;
+    for (const auto& t : data.types)
+        types.push_back(
+            OrderedJson{{"name", t.name}, {"rigid", t.rigid}, {"floor", t.floor}, {"mesh", t.mesh}});
+    std::vector<OrderedJson> elements;
+    elements.reserve(data.elements.size());
+    for (const auto& e : data.elements) elements.push_back(element_json(data, e));
+
+    std::string out = "{\n";
+    out += "  \"format\": \"tessera\",\n";
+    out += "  \"version\": " + std::to_string(format_version) + ",\n";
+    out += "  \"dimension\": " + std::to_string(data.dimension) + ",\n";
+    out += "  \"domain\": " + domain.dump() + ",\n";
+    out += "  \"types\": ";
+    append_array(out, types);
+    out += ",\n";
+    if (!data.attribute_names.empty())
+        out += "  \"attributes\": " + OrderedJson(data.attribute_names).dump() + ",\n";
+    out += "  \"elements\": ";
+    append_array(out, elements);
+    if (stats) out += ",\n  \"stats\": " + stats_json(*stats).dump();
+    out += "\n}\n";
+    return out;
+}
+
+}  // namespace tessera
