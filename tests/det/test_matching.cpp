@@ -71,10 +71,10 @@ TEST(DetMatching, KeysSeparateSamplesOfDifferentIds) {
     const Params p = test_params();
     MatchScratch s;
     std::vector<NeighborEntry> out = {entry(1, 0, 1)};
-    std::vector<NeighborEntry> in = {entry(1, 0, 2), entry(1.5, 0, 1)};
+    std::vector<NeighborEntry> in = {entry(1.5, 0, 1), entry(1, 0, 2)};  // sorted by key, as required
     std::vector<int> partner(1);
     EXPECT_NEAR(match_greedy(out.data(), 1, in.data(), 2, p, s, partner.data(), INFINITY), 0.25, 1e-12);
-    EXPECT_EQ(partner[0], 1);
+    EXPECT_EQ(partner[0], 0);
 }
 
 TEST(DetMatching, TypeMismatchPaysAlpha) {
