@@ -90,7 +90,9 @@ void gather_neighbors(const core::SpatialGrid& grid, const std::vector<Vec3>& po
 }
 
 int InputIndex::nearest_with_key(const Vec3& p, int k, double max_distance) const {
-    return grid.nearest(p, max_distance, [&](int i) { return key[i] == k; });
+    if (k < 0 || k >= static_cast<int>(key_grid.size())) return -1;
+    const int local = key_grid[k].nearest(p, max_distance, [](int) { return true; });
+    return local < 0 ? -1 : by_key[k][local];
 }
 
 namespace {
@@ -156,6 +158,12 @@ InputIndex build_input_index(const Exemplar& exemplar, const Params& params, int
     for (int i = 0; i < n; ++i) index.by_key[index.key[i]].push_back(i);
 
     index.grid.build(index.positions, params.input_radius, params.dimension);
+    index.key_positions.resize(index.by_key.size());
+    index.key_grid.resize(index.by_key.size());
+    for (size_t kk = 0; kk < index.by_key.size(); ++kk) {
+        for (int i : index.by_key[kk]) index.key_positions[kk].push_back(index.positions[i]);
+        index.key_grid[kk].build(index.key_positions[kk], params.spacing, params.dimension);
+    }
     index.nb_start.assign(n + 1, 0);
     std::vector<NeighborEntry> entries;
     std::vector<std::pair<double, int>> scratch;

@@ -63,6 +63,10 @@ struct InputIndex {
     std::vector<NeighborEntry> nb;
     std::vector<std::vector<int>> by_key; // samples of each key, index order
     core::SpatialGrid grid;
+    // Per key: positions of that key's samples and a grid over them, for the
+    // nearest-compatible lookups of k-coherence (one per neighbour per sample).
+    std::vector<std::vector<Vec3>> key_positions;
+    std::vector<core::SpatialGrid> key_grid;
     std::vector<int> sim_start, sim;      // k-coherence similarity sets (CSR)
 
     int size() const { return static_cast<int>(positions.size()); }
