@@ -33,7 +33,7 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
         const int ce = out.samples[c].element;
         for (const Pair& pr : state.pairs[c]) {
             const int o = pr.output;
-            const double w = out.samples[o].element == ce ? params.intra_weight : 1.0;
+            const double w = pr.weight * (out.samples[o].element == ce ? params.intra_weight : 1.0);
             diagonal[c] += w;
             diagonal[o] += w;
             triplets.emplace_back(c, o, -w);

@@ -82,6 +82,9 @@ struct Pair {
     int output = -1;   // output sample s'_o
     int input = -1;    // input sample s'_i paired with it
     Vec3 predicted;    // p(s'_i) - p(s_i), rotated into the output frame
+    double weight = 1.0; // 1 for pairs within the cap; cap2 / cost beyond it (a robust
+                         // weight: far pairs still push an extra sample toward a free
+                         // position, but cannot drag well-placed samples far away)
 };
 
 // The output being synthesized.

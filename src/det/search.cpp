@@ -154,7 +154,9 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
             for (int q = 0; q < m; ++q) {
                 const int pi = s.best_partner[q];
                 if (pi < 0) continue;
-                pairs.push_back(Pair{s.out_nb[q].sample, in_nb[pi].sample, in_nb[pi].offset});
+                const double c = pair_cost(s.out_nb[q], in_nb[pi], params);
+                const double w = c <= params.cap2 ? 1.0 : params.cap2 / c;
+                pairs.push_back(Pair{s.out_nb[q].sample, in_nb[pi].sample, in_nb[pi].offset, w});
             }
         }
     });
