@@ -1,0 +1,284 @@
+// apps/tessera/cmd_synth.cpp — `tessera synth INPUT -o OUTPUT`: loads an exemplar,
+// builds the output domain (--scale or --domain), runs tessera::synthesize_det with
+// the DetOptions given as flags of the same names, prints progress to stderr, and
+// writes the output (and an optional --preview picture).
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "common.hpp"
+
+namespace tessera_cli {
+namespace {
+
+// Set by SIGINT; the progress callback then asks the library to stop at the next
+// iteration boundary (a second Ctrl-C kills the process the usual way).
+volatile std::sig_atomic_t interrupted = 0;
+
+extern "C" void on_interrupt(int) {
+    interrupted = 1;
+    std::signal(SIGINT, SIG_DFL);
+}
+
+const char* to_string(tessera::Matching m) {
+    return m == tessera::Matching::greedy ? "greedy" : "hungarian";
+}
+const char* to_string(tessera::SearchMode s) {
+    return s == tessera::SearchMode::kcoherence ? "kcoherence" : "exhaustive";
+}
+
+struct SynthArgs {
+    std::string input, output, preview, input_domain, domain;
+    double scale = 2.0;
+    std::string method = "det";
+    std::string search, matching;
+    bool quiet = false;
+    tessera::DetOptions det;
+    CLI::Option* scale_option = nullptr;
+    CLI::Option* domain_option = nullptr;
+};
+
+// The text of --domain, checked for syntax before the input is loaded:
+// box:W,H[,D] (a size from the input's lower corner) or explicit corners.
+struct DomainSpec {
+    std::vector<double> size;            // W,H[,D] form
+    std::optional<tessera::Domain> box;  // corner form
+};
+
+const char* const domain_usage =
+    "expected box:W,H[,D] (size from the input domain's lower corner) or "
+    "box:xmin,ymin,xmax,ymax[,zmin,zmax] (corners)";
+
+std::optional<double> parse_double(std::string text) {
+    const size_t first = text.find_first_not_of(" \t");
+    const size_t last = text.find_last_not_of(" \t");
+    if (first == std::string::npos) return std::nullopt;
+    text = text.substr(first, last - first + 1);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size()) return std::nullopt;
+    return value;
+}
+
+DomainSpec parse_domain_spec(const std::string& text) {
+    const std::string prefix = "box:";
+    if (text.rfind(prefix, 0) != 0)
+        fail_option("--domain: " + std::string(domain_usage) + ", got '" + text + "'");
+    const std::string numbers = text.substr(prefix.size());
+    std::vector<double> values;
+    size_t start = 0;
+    while (true) {
+        const size_t comma = numbers.find(',', start);
+        const std::string field =
+            numbers.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const auto value = parse_double(field);
+        if (!value)
+            fail_option("--domain: '" + field + "' is not a number in '" + text + "'; " + domain_usage);
+        values.push_back(*value);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    DomainSpec spec;
+    if (values.size() == 4 || values.size() == 6) {
+        spec.box = tessera::parse_box_domain(numbers, "--domain");
+        return spec;
+    }
+    if (values.size() != 2 && values.size() != 3)
+        fail_option("--domain: " + std::string(domain_usage) + ", got " + std::to_string(values.size()) +
+                    " numbers in '" + text + "'");
+    for (size_t k = 0; k < values.size(); ++k)
+        if (!std::isfinite(values[k]) || !(values[k] > 0.0))
+            fail_option(std::string("--domain: the size along ") + "xyz"[k] + " must be a number > 0, got " +
+                        format_number(values[k]) + " in '" + text + "'");
+    spec.size = values;
+    return spec;
+}
+
+tessera::Domain output_domain(const SynthArgs& args, const std::optional<DomainSpec>& spec,
+                              const tessera::Exemplar& exemplar) {
+    if (!spec) return exemplar.domain.scaled(args.scale);
+    const auto mismatch = [&](int dimension) {
+        throw tessera::Error(tessera::ErrorKind::domain,
+                             "--domain " + args.domain + " is " + std::to_string(dimension) + "D but " +
+                                 args.input + " is " + std::to_string(exemplar.dimension) + "D");
+    };
+    if (spec->box) {
+        if (spec->box->dimension() != exemplar.dimension) mismatch(spec->box->dimension());
+        return *spec->box;
+    }
+    const int dimension = static_cast<int>(spec->size.size());
+    if (dimension != exemplar.dimension) mismatch(dimension);
+    const tessera::Vec3 lo = exemplar.domain.bounds().lo;
+    const tessera::Vec3 size{spec->size[0], spec->size[1], dimension == 3 ? spec->size[2] : 0.0};
+    return tessera::Domain::box(lo, lo + size, dimension);
+}
+
+// Checks every flag that does not need the input, naming the flag and its value.
+void check_options(SynthArgs& args) {
+    const tessera::DetOptions& d = args.det;
+    if (args.method != "det")
+        fail_option("--method must be det (the only method so far), got '" + args.method + "'");
+    if (args.search == "kcoherence")
+        args.det.search = tessera::SearchMode::kcoherence;
+    else if (args.search == "exhaustive")
+        args.det.search = tessera::SearchMode::exhaustive;
+    else
+        fail_option("--search must be kcoherence or exhaustive, got '" + args.search + "'");
+    if (args.matching == "greedy")
+        args.det.matching = tessera::Matching::greedy;
+    else if (args.matching == "hungarian")
+        args.det.matching = tessera::Matching::hungarian;
+    else
+        fail_option("--matching must be greedy or hungarian, got '" + args.matching + "'");
+    if (!std::isfinite(args.scale) || !(args.scale > 0.0))
+        fail_option("--scale must be a number > 0, got " + format_number(args.scale));
+    if (d.iterations < 0) fail_option("--iterations must be >= 0, got " + std::to_string(d.iterations));
+    if (!std::isfinite(d.radius) || d.radius < 0.0)
+        fail_option("--radius must be > 0, or 0 for automatic; got " + format_number(d.radius));
+    if (d.threads < 0)
+        fail_option("--threads must be >= 0 (0 = all hardware threads), got " + std::to_string(d.threads));
+    if (d.k < 1) fail_option("--k must be >= 1, got " + std::to_string(d.k));
+    if (!std::isfinite(d.alpha)) fail_option("--alpha must be a finite number (negative = automatic)");
+    if (!std::isfinite(d.lambda)) fail_option("--lambda must be a finite number (negative = automatic)");
+    if (!std::isfinite(d.patch_size) || d.patch_size < 0.0)
+        fail_option("--patch-size must be > 0, or 0 for automatic; got " + format_number(d.patch_size));
+    if (d.patch_candidates < 1)
+        fail_option("--patch-candidates must be >= 1, got " + std::to_string(d.patch_candidates));
+}
+
+tessera::Progress make_progress(bool quiet) {
+    return [quiet](const tessera::ProgressEvent& event) {
+        if (!quiet && event.stage == "iteration") {
+            char line[160];
+            std::snprintf(line, sizeof line, "iteration %d/%d  energy %.6g  elapsed %.2f s",
+                          event.iteration + 1, event.iterations, event.energy, event.elapsed_s);
+            std::cerr << line << std::endl;
+        }
+        return interrupted == 0;
+    };
+}
+
+void run_synth(SynthArgs& args) {
+    check_options(args);
+    std::optional<DomainSpec> spec;
+    if (args.domain_option->count() > 0) spec = parse_domain_spec(args.domain);
+    check_output_path(args.output, "-o", {".json", ".csv", ".ply", ".png", ".svg"});
+    if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
+
+    const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
+    const tessera::Domain domain = output_domain(args, spec, exemplar);
+    if (!args.quiet)
+        std::cerr << "synth: " << exemplar.elements.size() << " elements in " << exemplar.domain.describe()
+                  << " -> " << domain.describe() << " (method det, seed " << args.det.seed << ", "
+                  << args.det.iterations << " iterations)" << std::endl;
+
+    interrupted = 0;
+    std::signal(SIGINT, on_interrupt);
+    tessera::Arrangement result;
+    try {
+        result = tessera::synthesize_det(exemplar, domain, args.det, make_progress(args.quiet));
+    } catch (const tessera::Cancelled&) {
+        std::signal(SIGINT, SIG_DFL);
+        throw tessera::Error(tessera::ErrorKind::cancelled, "interrupted; nothing was written");
+    }
+    std::signal(SIGINT, SIG_DFL);
+
+    // The preview goes first: when OUTPUT exists, the whole command succeeded.
+    if (!args.preview.empty()) tessera::render_to_file(result, args.preview);
+    tessera::save(result, args.output);
+    if (!args.quiet) {
+        char line[256];
+        std::snprintf(line, sizeof line, "done: %zu elements, %.2f s, final energy %.6g",
+                      result.elements.size(), result.stats.total_seconds, result.stats.final_energy);
+        std::cerr << line << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview)
+                  << std::endl;
+    }
+}
+
+}  // namespace
+
+Subcommand add_synth_command(CLI::App& app) {
+    auto args = std::make_shared<SynthArgs>();
+    args->search = to_string(args->det.search);
+    args->matching = to_string(args->det.matching);
+    CLI::App* cmd = app.add_subcommand(
+        "synth",
+        "Synthesize an arrangement like the exemplar INPUT in a new domain and write it to OUTPUT. "
+        "Progress goes to stderr, one line per iteration.");
+    cmd->add_option("INPUT", args->input, "Exemplar: a tessera .json file or a .csv table (docs/format.md).")
+        ->required()
+        ->type_name("FILE");
+    add_output_option(
+        *cmd, args->output,
+        "Output file, by extension: .json (with run statistics), .csv, .ply, or a picture .png/.svg. "
+        "Written only when the run succeeds.",
+        true);
+    args->scale_option =
+        cmd->add_option(
+               "--scale", args->scale,
+               "Output domain = the input domain scaled by this factor on every axis, keeping its lower "
+               "corner (2 = twice as wide and tall, about 4x the elements in 2D). Used when --domain is "
+               "not given.")
+            ->capture_default_str();
+    args->domain_option =
+        cmd->add_option(
+               "--domain", args->domain,
+               "Output domain: box:W,H (2D) or box:W,H,D (3D) = a box of that size from the input domain's "
+               "lower corner; box:xmin,ymin,xmax,ymax or box:xmin,ymin,xmax,ymax,zmin,zmax = explicit "
+               "corners. Its dimension must be the input's.")
+            ->type_name("SPEC");
+    args->scale_option->excludes(args->domain_option);
+    add_input_domain_option(*cmd, args->input_domain, "INPUT");
+    cmd->add_option(
+           "--preview", args->preview,
+           "Also write a picture of the output (.png or .svg, 800 pixels wide). It is written before "
+           "OUTPUT, so an existing OUTPUT means the whole command succeeded.")
+        ->type_name("FILE");
+    cmd->add_option("--method", args->method,
+                    "Synthesis method: det (neighbourhood matching, the only one so far).")
+        ->capture_default_str();
+    add_seed_option(*cmd, args->det.seed);
+    cmd->add_option("--iterations", args->det.iterations,
+                    "Iterations of search + assignment (0 = the patch-copy initialization only).")
+        ->capture_default_str();
+    cmd->add_option(
+           "--radius", args->det.radius,
+           "Neighbourhood radius in the exemplar's units; 0 = automatic (mean nearest-neighbour distance "
+           "x 2 in 2D, x 1.5 in 3D).")
+        ->capture_default_str();
+    add_threads_option(*cmd, args->det.threads);
+    cmd->add_option("--k", args->det.k,
+                    "Size of each exemplar sample's similarity set for k-coherence search (>= 1).")
+        ->capture_default_str();
+    cmd->add_option("--search", args->search,
+                    "Candidate search: kcoherence (fast, the paper's) or exhaustive (every exemplar sample).")
+        ->capture_default_str();
+    cmd->add_option("--matching", args->matching,
+                    "Pairing of neighbourhood samples: greedy (the paper's) or hungarian (exact, slower).")
+        ->capture_default_str();
+    cmd->add_option("--alpha", args->det.alpha,
+                    "Weight of the attribute (type) term, in squared length units; negative = automatic "
+                    "(mean nearest-neighbour distance squared).")
+        ->capture_default_str();
+    cmd->add_option("--lambda", args->det.lambda,
+                    "Weight of the domain boundary term, in squared length units; negative = automatic "
+                    "(mean nearest-neighbour distance squared).")
+        ->capture_default_str();
+    cmd->add_option("--patch-size", args->det.patch_size,
+                    "Side of the patches copied at initialization; 0 = automatic (min(2 x radius, half the "
+                    "exemplar's smallest extent)).")
+        ->capture_default_str();
+    cmd->add_option("--patch-candidates", args->det.patch_candidates,
+                    "Random candidate patches tried per cell at initialization (>= 1).")
+        ->capture_default_str();
+    add_quiet_option(*cmd, args->quiet);
+    return {cmd, [args] { run_synth(*args); }};
+}
+
+}  // namespace tessera_cli

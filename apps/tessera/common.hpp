@@ -1,0 +1,73 @@
+// apps/tessera/common.hpp — the vocabulary every `tessera` subcommand shares:
+// the options that mean the same everywhere (-o, --seed, --quiet, --threads,
+// --input-domain), loading an input with --input-domain, up-front checks of
+// output paths, and the mapping from tessera::ErrorKind to exit codes.
+// The CLI only parses, calls the library and prints; nothing here computes.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <string>
+
+#include "tessera/tessera.hpp"
+
+namespace tessera_cli {
+
+// Exit codes (docs/cli.md, "Exit codes").
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_option = 2;       // bad option / usage (also every CLI11 parse error)
+inline constexpr int exit_input = 3;        // invalid input data
+inline constexpr int exit_domain = 4;       // a domain with no area/volume, or too small
+inline constexpr int exit_io = 5;           // a file could not be read or written
+inline constexpr int exit_internal = 70;    // a bug in tessera (EX_SOFTWARE)
+inline constexpr int exit_cancelled = 130;  // interrupted (128 + SIGINT)
+
+int exit_code(tessera::ErrorKind kind);
+
+// Prints the one-line error message `tessera: error: <message>` to stderr.
+void print_error(const std::string& message);
+
+// Throws tessera::Error(option) with `message` (which names the flag at fault).
+[[noreturn]] void fail_option(const std::string& message);
+
+// Shared options. Each adds the option to `app` with the same name, meaning and
+// help text in every subcommand.
+CLI::Option* add_output_option(CLI::App& app, std::string& path, const std::string& what, bool required);
+// `operand` names the positional the window belongs to (INPUT, EXEMPLAR, FILE).
+CLI::Option* add_input_domain_option(CLI::App& app, std::string& text, const std::string& operand);
+CLI::Option* add_quiet_option(CLI::App& app, bool& quiet);
+CLI::Option* add_threads_option(CLI::App& app, int& threads);
+CLI::Option* add_seed_option(CLI::App& app, std::uint64_t& seed);
+
+// Loads an exemplar or arrangement from .json or .csv. A non-empty
+// `input_domain_text` ("xmin,ymin,xmax,ymax[,zmin,zmax]", the value of the option
+// named `flag`) is the observation window: CSV files are read with it, and for a
+// JSON file it replaces the file's own domain (its dimension must match).
+tessera::Exemplar load_input(const std::string& path, const std::string& input_domain_text,
+                             const std::string& flag = "--input-domain");
+
+// Lower-cased extension including the dot ("" if none), as the library reads it.
+std::string extension_of(const std::string& path);
+
+// Checks before any work is done that `path` (the value of `flag`) has one of the
+// `allowed` extensions (e.g. {".png", ".svg"}) and that its directory exists, so that
+// a run that would fail at the end fails at the start instead.
+void check_output_path(const std::string& path, const std::string& flag,
+                       std::initializer_list<const char*> allowed);
+
+// Formats a double compactly for messages ("%g").
+std::string format_number(double value);
+
+// Subcommands: each registers itself on `app` and returns the function that runs it
+// after parsing (which throws tessera::Error on failure).
+struct Subcommand {
+    CLI::App* app = nullptr;
+    std::function<void()> run;
+};
+Subcommand add_synth_command(CLI::App& app);
+Subcommand add_metrics_command(CLI::App& app);
+Subcommand add_render_command(CLI::App& app);
+
+}  // namespace tessera_cli
