@@ -1,0 +1,129 @@
+// Tests of the 2D PNG preview: a valid PNG of the requested width, class colours
+// at element centres, white away from elements, y pointing up, orientation
+// ticks, polylines for multi-sample elements, option errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/render_test_util.hpp"
+#include "render/style.hpp"
+#include "tessera/error.hpp"
+#include "tessera/render.hpp"
+
+using namespace tessera;
+
+namespace {
+
+// Two classes of disks with radius 1 in a 10 x 10 box.
+Exemplar two_disks() {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    const int a = ex.type_index("pebble"), b = ex.type_index("shell");
+    ex.add_element(a, {Vec3{3, 3, 0}}, 1.0);
+    ex.add_element(b, {Vec3{7, 7, 0}}, 1.0);
+    ex.add_element(b, {Vec3{7, 2, 0}}, 1.0);
+    return ex;
+}
+
+render::Frame2D frame_of(const Exemplar& ex, int width) {
+    return render::make_frame_2d(ex, render::make_style(ex), RenderOptions{.width = width});
+}
+
+}  // namespace
+
+TEST(Render2d, PngDecodesToRequestedWidthAndAspect) {
+    const Exemplar ex = two_disks();
+    const std::string png = render_png(ex, {.width = 400});
+    ASSERT_TRUE(test::has_png_signature(png));
+    const auto img = test::decode_png(png);
+    EXPECT_EQ(img.width, 400);
+    EXPECT_NEAR(img.height, 400, 2);  // square domain
+
+    Exemplar wide = ex;
+    wide.domain = Domain::box({0, 0, 0}, {20, 10, 0}, 2);
+    const auto wide_img = test::decode_png(render_png(wide, {.width = 400}));
+    EXPECT_EQ(wide_img.width, 400);
+    EXPECT_NEAR(wide_img.height, 400 * (10 + 1.2) / (20 + 1.2), 2);  // 3% margins of the longer side
+}
+
+TEST(Render2d, ClassColoursAtCentresWhiteElsewhere) {
+    const Exemplar ex = two_disks();
+    const auto img = test::decode_png(render_png(ex, {.width = 400}));
+    const auto f = frame_of(ex, 400);
+    for (const auto& e : ex.elements) {
+        const int x = static_cast<int>(f.px(e.position.x)), y = static_cast<int>(f.py(e.position.y));
+        EXPECT_LE(test::color_distance(img.at(x, y), render::class_color(e.type)), 1) << "element type " << e.type;
+    }
+    // Far from every element and from the outline.
+    EXPECT_EQ(test::color_distance(img.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(5))), render::white), 0);
+    EXPECT_EQ(test::color_distance(img.at(static_cast<int>(f.px(2)), static_cast<int>(f.py(8))), render::white), 0);
+    // y points up: the element at y = 3 is in the lower half of the picture.
+    EXPECT_GT(f.py(3.0), img.height / 2);
+    // The domain outline is grey, not white.
+    const auto edge = img.at(static_cast<int>(f.px(5)), static_cast<int>(std::lround(f.py(0.0) - 0.5)));
+    EXPECT_LT(edge.r, 0.9f);
+}
+
+TEST(Render2d, DiskSizeFollowsSpacingWhenNoRadius) {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    const int t = ex.type_index("p");
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j) ex.add_element(t, {Vec3{1.0 + 2 * i, 1.0 + 2 * j, 0}});
+    // Spacing 2 -> radius 0.8: a point 0.6 from a centre is inside, 1.0 (midway) is not.
+    const auto img = test::decode_png(render_png(ex, {.width = 500}));
+    const auto f = frame_of(ex, 500);
+    const auto blue = render::class_color(0);
+    EXPECT_LE(test::color_distance(img.at(static_cast<int>(f.px(5.6)), static_cast<int>(f.py(5))), blue), 1);
+    EXPECT_EQ(test::color_distance(img.at(static_cast<int>(f.px(6.0)), static_cast<int>(f.py(5))), render::white), 0);
+}
+
+TEST(Render2d, OrientationTickIsDarker) {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    ex.add_element(ex.type_index("stone"), {Vec3{5, 5, 0}}, 2.0);
+    ex.elements[0].orientation = Quat::from_angle_z(std::acos(-1.0) / 2.0);  // tick points +y
+    const auto img = test::decode_png(render_png(ex, {.width = 400}));
+    const auto f = frame_of(ex, 400);
+    const auto fill = render::class_color(0);
+    const auto above = img.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(6)));
+    const auto below = img.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(4)));
+    EXPECT_LE(test::color_distance(below, fill), 1);
+    EXPECT_LT(above.r + above.g + above.b, 0.8f * (fill.r + fill.g + fill.b));
+}
+
+TEST(Render2d, MultiSampleElementsArePolylines) {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    const int t = ex.type_index("stick");
+    ex.add_element(t, {Vec3{1, 2, 0}, Vec3{5, 2, 0}, Vec3{5, 8, 0}});
+    ex.add_element(t, {Vec3{8, 1, 0}, Vec3{8, 9, 0}, Vec3{9, 9, 0}});
+    const auto img = test::decode_png(render_png(ex, {.width = 400}));
+    const auto f = frame_of(ex, 400);
+    const auto color = render::class_color(0);
+    // Midpoints of segments carry the class colour; a point off the sticks is white.
+    EXPECT_LE(test::color_distance(img.at(static_cast<int>(f.px(3)), static_cast<int>(f.py(2))), color), 1);
+    EXPECT_LE(test::color_distance(img.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(5))), color), 1);
+    EXPECT_EQ(test::color_distance(img.at(static_cast<int>(f.px(3)), static_cast<int>(f.py(6))), render::white), 0);
+    // Sample dots are darker than the line; without show_samples they are gone.
+    const auto dot = img.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(2)));
+    EXPECT_LT(dot.r + dot.g + dot.b, 0.8f * (color.r + color.g + color.b));
+    const auto plain = test::decode_png(render_png(ex, {.width = 400, .show_samples = false}));
+    EXPECT_LE(test::color_distance(plain.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(2))), color), 1);
+}
+
+TEST(Render2d, SingleElementAndOptionErrors) {
+    Exemplar one;
+    one.domain = Domain::box({0, 0, 0}, {4, 2, 0}, 2);
+    one.add_element(one.type_index("a"), {Vec3{2, 1, 0}});
+    const auto img = test::decode_png(render_png(one, {.width = 200}));
+    ASSERT_EQ(img.width, 200);
+    EXPECT_LE(test::color_distance(img.at(100, img.height / 2), render::class_color(0)), 1);
+    try {
+        render_png(one, {.width = 4});
+        FAIL() << "expected Error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::option);
+    }
+    EXPECT_THROW(render_svg(one, {.width = 100000}), Error);
+}
