@@ -29,6 +29,41 @@ struct CellGrid {
     }
 };
 
+// Calls fn(cell) for the cells around `c` (3^d block) that come before it in raster order.
+template <class Fn>
+void for_each_earlier_neighbor(const CellGrid& cells, int c, int dim, Fn&& fn) {
+    const int cx = c % cells.dims[0], cy = (c / cells.dims[0]) % cells.dims[1], cz = c / (cells.dims[0] * cells.dims[1]);
+    for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int x = cx + dx, y = cy + dy, z = cz + dz;
+                if (x < 0 || y < 0 || z < 0 || x >= cells.dims[0] || y >= cells.dims[1] || z >= cells.dims[2]) continue;
+                const int nb = (z * cells.dims[1] + y) * cells.dims[0] + x;
+                if (nb < c) fn(nb);
+            }
+}
+
+// Closest distance between element centroids of each pair of types in the
+// exemplar (infinity when a type pair never occurs).
+std::vector<double> closest_type_pairs(const Exemplar& exemplar, const std::vector<Vec3>& centers,
+                                       const core::SpatialGrid& grid, double max_distance) {
+    const int types = static_cast<int>(exemplar.types.size());
+    std::vector<double> closest(types * types, INFINITY);
+    for (size_t i = 0; i < centers.size(); ++i) {
+        const int a = exemplar.elements[i].type;
+        for (int b = 0; b < types; ++b) {
+            const int j = grid.nearest(centers[i], max_distance, [&](int k) {
+                return k != static_cast<int>(i) && exemplar.elements[k].type == b;
+            });
+            if (j < 0) continue;
+            const double d = norm(centers[j] - centers[i]);
+            closest[a * types + b] = std::min(closest[a * types + b], d);
+            closest[b * types + a] = std::min(closest[b * types + a], d);
+        }
+    }
+    return closest;
+}
+
 }  // namespace
 
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*index*/, const Domain& domain,
@@ -59,6 +94,15 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
     core::SpatialGrid in_grid;
     in_grid.build(in_centers, std::max(params.spacing, patch / 4.0), dim);
 
+    // Seam duplicates: where two patches meet, both may fill the same place. An
+    // element copied closer to an already placed one than 3/4 of the closest
+    // distance the exemplar shows for that pair of types is such a duplicate and is
+    // not copied (exemplars with overlapping elements have closest distance ~0 and
+    // lose nothing).
+    const int n_types = static_cast<int>(exemplar.types.size());
+    std::vector<double> min_gap = closest_type_pairs(exemplar, in_centers, in_grid, patch);
+    for (double& g : min_gap) g = std::isfinite(g) ? 0.75 * g : 0.0;
+
     // Band around a cell in which the candidate windows are compared with placed elements.
     const double band = std::min(params.spacing, 0.5 * patch);
     const double cap2 = params.cap2;
@@ -79,27 +123,14 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
         const Vec3 clo = cells.cell_lo(c);
         // Output elements already placed in the band around this cell.
         std::vector<int> band_elements;
-        int nc[3];
-        {
-            int x = c % cells.dims[0], y = (c / cells.dims[0]) % cells.dims[1], z = c / (cells.dims[0] * cells.dims[1]);
-            nc[0] = x, nc[1] = y, nc[2] = z;
-        }
-        for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int x = nc[0] + dx, y = nc[1] + dy, z = nc[2] + dz;
-                    if (x < 0 || y < 0 || z < 0 || x >= cells.dims[0] || y >= cells.dims[1] || z >= cells.dims[2])
-                        continue;
-                    const int nb = (z * cells.dims[1] + y) * cells.dims[0] + x;
-                    if (nb >= c) continue;  // raster order: only earlier cells are placed
-                    for (int e : placed[nb]) {
-                        const Vec3& p = out.elements[e].position;
-                        bool near = true;
-                        for (int k = 0; k < dim; ++k)
-                            near = near && p[k] >= clo[k] - band && p[k] <= clo[k] + patch + band;
-                        if (near) band_elements.push_back(e);
-                    }
-                }
+        for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
+            for (int e : placed[nb]) {
+                const Vec3& p = out.elements[e].position;
+                bool near = true;
+                for (int k = 0; k < dim; ++k) near = near && p[k] >= clo[k] - band && p[k] <= clo[k] + patch + band;
+                if (near) band_elements.push_back(e);
+            }
+        });
 
         // Choose among random windows the one most consistent with the band.
         Vec3 best_origin;
@@ -154,6 +185,14 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
             for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
             if (!in_cell || !domain.inside(q)) continue;
             const Element& src = exemplar.elements[i];
+            bool duplicate = false;
+            for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
+                for (int e : placed[nb]) {
+                    const double gap = min_gap[src.type * n_types + out.elements[e].type];
+                    if (gap > 0.0 && squared_norm(out.elements[e].position - q) < gap * gap) duplicate = true;
+                }
+            });
+            if (duplicate) continue;
             const Vec3 shift = clo - best_origin;
             Element e = src;
             e.first_sample = static_cast<int>(out.samples.size());

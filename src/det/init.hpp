@@ -16,9 +16,16 @@ struct InitResult {
     std::vector<int> source_sample;    // per output sample: the input sample it was copied from
     std::vector<int> source_element;   // per output element: the input element it was copied from
     double patch_size = 0.0;
+    int filled = 0;                    // elements added by fill_holes
 };
 
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
                               const Params& params, const DetOptions& options);
+
+// Adds copies of exemplar elements at the emptiest places of the domain until the
+// output holds the exemplar's density (or no gap wider than half a spacing is left).
+// Returns how many were added.
+int fill_holes(InitResult& init, const Exemplar& exemplar, const Domain& domain, const Params& params,
+               std::uint64_t seed);
 
 }  // namespace tessera::det
