@@ -72,7 +72,7 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
         for (int k = begin; k < end; ++k) {
             Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
             cg.setMaxIterations(cg_max_iterations);
-            cg.setTolerance(1e-8);
+            cg.setTolerance(params.cg_tolerance);
             cg.compute(a);
             delta.col(k) = cg.solve(rhs.col(k));
             iterations[k] = static_cast<int>(cg.iterations());

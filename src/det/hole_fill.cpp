@@ -108,24 +108,7 @@ int fill_holes(InitResult& init, const Exemplar& exemplar, const Domain& domain,
         }
         if (d2 < min_gap2) break;  // no hole left
         const int src_index = static_cast<int>(rng.below(static_cast<std::uint64_t>(added), exemplar.elements.size()));
-        const Element& src = exemplar.elements[src_index];
-        const Vec3 shift = p - src.position;
-        Element e = src;
-        e.first_sample = static_cast<int>(out.samples.size());
-        e.id = out.elements.size();
-        e.locked = false;
-        const int index_out = static_cast<int>(out.elements.size());
-        for (int s = 0; s < src.sample_count; ++s) {
-            Sample smp = exemplar.samples[src.first_sample + s];
-            smp.p = smp.p + shift;
-            if (dim == 2) smp.p.z = 0.0;
-            smp.element = index_out;
-            out.samples.push_back(smp);
-            init.source_sample.push_back(src.first_sample + s);
-        }
-        e.position = p;
-        out.elements.push_back(std::move(e));
-        init.source_element.push_back(src_index);
+        append_copy(init, exemplar, src_index, p - exemplar.elements[src_index].position, dim);
         grid.add(p);
         --missing;
         ++added;

@@ -66,6 +66,29 @@ std::vector<double> closest_type_pairs(const Exemplar& exemplar, const std::vect
 
 }  // namespace
 
+int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Vec3& shift, int dimension) {
+    Arrangement& out = init.arrangement;
+    const Element& src = exemplar.elements[source];
+    Element e = src;
+    e.first_sample = static_cast<int>(out.samples.size());
+    e.id = out.elements.size();
+    e.locked = false;
+    const int index_out = static_cast<int>(out.elements.size());
+    for (int s = 0; s < src.sample_count; ++s) {
+        Sample smp = exemplar.samples[src.first_sample + s];
+        smp.p += shift;
+        if (dimension == 2) smp.p.z = 0.0;
+        smp.element = index_out;
+        out.samples.push_back(smp);
+        init.source_sample.push_back(src.first_sample + s);
+    }
+    e.position = src.position + shift;
+    if (dimension == 2) e.position.z = 0.0;
+    out.elements.push_back(std::move(e));
+    init.source_element.push_back(source);
+    return index_out;
+}
+
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*index*/, const Domain& domain,
                               const Params& params, const DetOptions& options) {
     const int dim = params.dimension;
@@ -193,24 +216,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                 }
             });
             if (duplicate) continue;
-            const Vec3 shift = clo - best_origin;
-            Element e = src;
-            e.first_sample = static_cast<int>(out.samples.size());
-            e.id = out.elements.size();
-            e.locked = false;
-            const int index_out = static_cast<int>(out.elements.size());
-            for (int s = 0; s < src.sample_count; ++s) {
-                Sample smp = exemplar.samples[src.first_sample + s];
-                smp.p = smp.p + shift;
-                if (dim == 2) smp.p.z = 0.0;
-                smp.element = index_out;
-                out.samples.push_back(smp);
-                result.source_sample.push_back(src.first_sample + s);
-            }
-            e.position = src.position + shift;
-            if (dim == 2) e.position.z = 0.0;
-            out.elements.push_back(std::move(e));
-            result.source_element.push_back(i);
+            const int index_out = append_copy(result, exemplar, i, clo - best_origin, dim);
             const int cell = cells.index_of(out.elements.back().position, dim);
             placed[cell >= 0 ? cell : c].push_back(index_out);
         }

@@ -28,6 +28,9 @@ struct Params {
     // of conjugate-gradient iterations whatever the output size; the next
     // iterations remove its small bias.
     double anchor_weight = 0.01;
+    // Relative residual at which the conjugate-gradient solve of Eq. 4 stops. The
+    // solve is repeated every iteration, so a loose tolerance loses nothing.
+    double cg_tolerance = 1e-6;
     // Weight of the pull of samples outside the domain back to its boundary.
     double wall_weight = 8.0;
     Matching matching = Matching::greedy;

@@ -25,7 +25,6 @@ struct Scratch {
 // lambda * Eq. 6: the input neighbourhood n(s_i), shifted to p(s_o), should lie in the domain.
 double occupancy_term(const InputIndex& index, int i, const Vec3& center, const Domain& domain,
                       const Params& params) {
-    if (params.lambda <= 0.0) return 0.0;
     const NeighborEntry* nb = index.neighbors(i);
     double sum = 0.0;
     const double r2 = params.radius * params.radius;
@@ -125,6 +124,9 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
             double best = INFINITY;
             int best_i = -1;
             const auto& self_element = out.elements[element[so]];
+            // Eq. 6 vanishes for every candidate when the whole disk of radius r lies inside.
+            const bool near_boundary =
+                params.lambda > 0.0 && domain.distance_to_boundary(positions[so]) < params.radius;
             for (int i : s.candidates) {
                 double c = 0.0;
                 if (key == 0) {  // the centre's own attribute term
@@ -135,7 +137,7 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
                     }
                     c += params.alpha * q;
                 }
-                c += occupancy_term(index, i, positions[so], domain, params);
+                if (near_boundary) c += occupancy_term(index, i, positions[so], domain, params);
                 if (c >= best) continue;
                 c += match_neighborhoods(s.out_nb.data(), m, index.neighbors(i), index.neighbor_count(i), params,
                                          s.match, s.partner.data(), best - c);

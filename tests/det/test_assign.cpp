@@ -32,6 +32,7 @@ TEST(DetAssign, LeastSquaresRecoversAnArrangementFromExactPredictions) {
     Params params;
     params.dimension = 2;
     params.anchor_weight = 1e-9;  // no damping: the solve alone must be exact
+    params.cg_tolerance = 1e-12;
     const AssignReport report = assign_positions(state, params, 2);
     EXPECT_TRUE(report.cg_converged);
     Vec3 shift;
