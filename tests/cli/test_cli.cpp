@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -348,6 +349,9 @@ struct ErrorCase {
     int code;                      // expected exit code
     std::vector<std::string> say;  // substrings of the one-line message
 };
+
+// Printed in test listings (ctest names) instead of the struct's raw bytes.
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
 
 class CliErrors : public CliFixture, public ::testing::WithParamInterface<ErrorCase> {};
 
