@@ -32,14 +32,20 @@ public:
         if (n == 0) lo_ = hi = Vec3{};
         cell_ = cell_size > 0.0 ? cell_size : 1.0;
         const double max_cells = 4.0 * std::max(n, 1) + 64.0;
+        // Extents are measured in doubles before any int conversion, so a far-away
+        // point coarsens the grid instead of overflowing a cell count.
         for (;;) {
             double total = 1.0;
-            for (int k = 0; k < 3; ++k) {
-                dims_[k] = k < dimension ? static_cast<int>(std::floor((hi[k] - lo_[k]) / cell_)) + 1 : 1;
-                total *= dims_[k];
+            double counts[3] = {1.0, 1.0, 1.0};
+            for (int k = 0; k < dimension; ++k) {
+                counts[k] = std::floor((hi[k] - lo_[k]) / cell_) + 1.0;
+                total *= counts[k];
             }
-            if (total <= max_cells) break;
-            cell_ *= 1.5;
+            if (total <= max_cells) {
+                for (int k = 0; k < 3; ++k) dims_[k] = static_cast<int>(counts[k]);
+                break;
+            }
+            cell_ *= std::max(1.5, std::pow(total / max_cells, 1.0 / dimension));
         }
         inv_cell_ = 1.0 / cell_;
         const int cells = dims_[0] * dims_[1] * dims_[2];
@@ -66,8 +72,11 @@ public:
         int lo[3], hi[3];
         for (int k = 0; k < 3; ++k) {
             if (k < dimension_) {
-                lo[k] = std::max(0, static_cast<int>(std::floor((p[k] - radius - lo_[k]) * inv_cell_)));
-                hi[k] = std::min(dims_[k] - 1, static_cast<int>(std::floor((p[k] + radius - lo_[k]) * inv_cell_)));
+                // Clamped as doubles first: a huge radius must not overflow the int cast.
+                lo[k] = static_cast<int>(std::clamp(std::floor((p[k] - radius - lo_[k]) * inv_cell_), 0.0,
+                                                    static_cast<double>(dims_[k] - 1)));
+                hi[k] = static_cast<int>(std::clamp(std::floor((p[k] + radius - lo_[k]) * inv_cell_), -1.0,
+                                                    static_cast<double>(dims_[k] - 1)));
             } else {
                 lo[k] = hi[k] = 0;
             }
@@ -106,7 +115,8 @@ private:
     int cell_index(const Vec3& p) const {
         int c[3] = {0, 0, 0};
         for (int k = 0; k < dimension_; ++k)
-            c[k] = std::clamp(static_cast<int>(std::floor((p[k] - lo_[k]) * inv_cell_)), 0, dims_[k] - 1);
+            c[k] = static_cast<int>(
+                std::clamp(std::floor((p[k] - lo_[k]) * inv_cell_), 0.0, static_cast<double>(dims_[k] - 1)));
         return (c[2] * dims_[1] + c[1]) * dims_[0] + c[0];
     }
 

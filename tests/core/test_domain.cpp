@@ -24,3 +24,15 @@ TEST(Domain, ScaledKeepsLowerCorner) {
     EXPECT_EQ(d.bounds().lo, Vec3(1, 2, 3));
     EXPECT_EQ(d.bounds().hi, Vec3(4, 8, 9));
 }
+
+#include "core/spatial_grid.hpp"
+
+TEST(SpatialGrid, FarAwayPointCoarsensInsteadOfOverflowing) {
+    std::vector<Vec3> pts = {{0, 0, 0}, {0.5, 0, 0}, {1e16, 3e15, 0}};
+    core::SpatialGrid grid;
+    grid.build(pts, 0.1, 2);
+    int found = 0;
+    grid.for_each_within({0, 0, 0}, 1.0, [&](int, double) { ++found; });
+    EXPECT_EQ(found, 2);
+    EXPECT_EQ(grid.nearest({1e16, 3e15, 0}, 1e17, [](int) { return true; }), 2);
+}
