@@ -9,13 +9,26 @@ namespace tessera::det {
 namespace {
 
 // Cheapest free input partner of output entry o among in[lo, hi) (its match
-// key's range), or -1 if there is none.
+// key's range), or -1 if there is none. The first scan of a matching has no taken
+// entries (check_taken = false); samples of multi-sample elements (key != 0) have
+// no attribute term, so their loop is a plain squared distance.
+template <bool check_taken>
 inline int best_free_partner(const NeighborEntry& o, const NeighborEntry* in, int lo, int hi, const Params& params,
                              const std::vector<char>& taken, double& cost) {
     int best = -1;
     cost = INFINITY;
+    if (o.key != 0) {
+        const double ox = o.offset.x, oy = o.offset.y, oz = o.offset.z;
+        for (int i = lo; i < hi; ++i) {
+            if (check_taken && taken[i]) continue;
+            const double dx = ox - in[i].offset.x, dy = oy - in[i].offset.y, dz = oz - in[i].offset.z;
+            const double c = dx * dx + dy * dy + dz * dz;
+            if (c < cost) cost = c, best = i;
+        }
+        return best;
+    }
     for (int i = lo; i < hi; ++i) {
-        if (taken[i]) continue;
+        if (check_taken && taken[i]) continue;
         const double c = pair_cost(o, in[i], params);
         if (c < cost) cost = c, best = i;
     }
@@ -57,7 +70,7 @@ double match_greedy(const NeighborEntry* out, int m, const NeighborEntry* in, in
             lo = hi;
         }
         double cost;
-        s.best_input[o] = best_free_partner(out[o], in, s.range_lo[o], s.range_hi[o], params, s.taken, cost);
+        s.best_input[o] = best_free_partner<false>(out[o], in, s.range_lo[o], s.range_hi[o], params, s.taken, cost);
         s.heap.emplace_back(cost, o);
         lower_bound += std::min(cost, params.cap2);
         if (lower_bound >= bound) return lower_bound;  // cannot beat the caller's best
@@ -72,7 +85,7 @@ double match_greedy(const NeighborEntry* out, int m, const NeighborEntry* in, in
         const int i = s.best_input[o];
         if (i >= 0 && s.taken[i]) {  // stale: its partner went to a cheaper pair
             double fresh;
-            s.best_input[o] = best_free_partner(out[o], in, s.range_lo[o], s.range_hi[o], params, s.taken, fresh);
+            s.best_input[o] = best_free_partner<true>(out[o], in, s.range_lo[o], s.range_hi[o], params, s.taken, fresh);
             s.heap.emplace_back(fresh, o);
             std::push_heap(s.heap.begin(), s.heap.end(), later);
             continue;
