@@ -370,6 +370,7 @@ OrderedJson element_json(const Exemplar& data, const Element& e) {
     return out;
 }
 
+// The deterministic part of the run statistics.
 OrderedJson stats_json(const RunStats& stats) {
     OrderedJson out;
     out["method"] = stats.method;
@@ -377,11 +378,10 @@ OrderedJson stats_json(const RunStats& stats) {
     out["final_energy"] = stats.final_energy;
     out["radius"] = stats.radius;
     out["solver_bound_hits"] = stats.solver_bound_hits;
-    out["iteration_seconds"] = stats.iteration_seconds;
-    out["init_seconds"] = stats.init_seconds;
-    out["total_seconds"] = stats.total_seconds;
-    out["threads"] = stats.threads;
     out["seed"] = stats.seed;
+    // Timings and the thread count are left out on purpose: the file must be
+    // byte-identical for the same input, options and seed on any machine and with
+    // any number of threads. They stay in RunStats and the CLI prints them.
     return out;
 }
 

@@ -151,9 +151,11 @@ TEST(IoJson, ArrangementStatsAreWrittenAndIgnoredOnRead) {
     a.stats.seed = 18446744073709551615ull;
     const std::string text = to_json(a, &a.stats);
     for (const char* fragment : {"\"stats\":", "\"method\":\"det\"", "\"energy\":[3.5,2.25,2.0]",
-                                 "\"iteration_seconds\":", "\"init_seconds\":", "\"total_seconds\":0.75",
-                                 "\"threads\":2", "\"seed\":18446744073709551615"})
+                                 "\"seed\":18446744073709551615"})
         EXPECT_NE(text.find(fragment), std::string::npos) << fragment << "\n" << text;
+    // Timings and the thread count vary between runs of the same synthesis: not written.
+    for (const char* fragment : {"seconds", "\"threads\""})
+        EXPECT_EQ(text.find(fragment), std::string::npos) << fragment << "\n" << text;
     expect_same(a, parse_json(text, "out.json"));
 }
 
