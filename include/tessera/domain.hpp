@@ -29,7 +29,11 @@ public:
     int dimension() const { return dimension_; }
     const Box& bounds() const { return bounds_; }
 
-    bool inside(const Vec3& p) const;
+    // Inline: Eq. 6 asks it for every neighbour of every candidate of the search.
+    bool inside(const Vec3& p) const {
+        return p.x >= bounds_.lo.x && p.x <= bounds_.hi.x && p.y >= bounds_.lo.y && p.y <= bounds_.hi.y &&
+               (dimension_ == 2 || (p.z >= bounds_.lo.z && p.z <= bounds_.hi.z));
+    }
     // Occupancy c(p) of Eq. 6: 1 inside, 0 outside (boxes are sharp).
     double occupancy(const Vec3& p) const { return inside(p) ? 1.0 : 0.0; }
     // Area (2D) or volume (3D).

@@ -29,12 +29,6 @@ Domain Domain::box(const Vec3& lo, const Vec3& hi, int dimension) {
     return d;
 }
 
-bool Domain::inside(const Vec3& p) const {
-    for (int k = 0; k < dimension_; ++k)
-        if (p[k] < bounds_.lo[k] || p[k] > bounds_.hi[k]) return false;
-    return true;
-}
-
 double Domain::measure() const {
     double m = 1.0;
     for (int k = 0; k < dimension_; ++k) m *= bounds_.hi[k] - bounds_.lo[k];

@@ -103,7 +103,8 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
                 // at p(m(s'_o)) - (p(s'_o) - p(s_o)) for s_o (shifted as in [Han et al. 2006]).
                 for (const auto& e : s.out_nb) {
                     const int mo = previous[e.sample];
-                    if (mo < 0) continue;
+                    // Samples of the centre's own element suggest (almost always) its own previous match.
+                    if (mo < 0 || e.element == element[so]) continue;
                     const Vec3 predicted = index.positions[mo] - e.offset;
                     add_with_similarity_set(s, index, index.nearest_with_key(predicted, key, std::sqrt(params.cap2)));
                 }
