@@ -200,22 +200,26 @@ void snap_rigid_elements(OutputState& state, const InputIndex& index, int dimens
 
 // Elements that left the box are translated back (as a whole, so shapes are kept).
 void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
-    const Box b = domain.bounds();
+    // Works through Domain::closest_inside only, so any domain shape is served: the
+    // element moves by the largest correction any of its samples needs, a few times
+    // (a move that fixes one sample can push another out); an element that cannot
+    // fit (longer than a thin domain) ends with the smallest violation found.
+    constexpr int max_rounds = 4;
     for (auto& el : out.elements) {
         if (el.locked) continue;
-        Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-        for (int s = 0; s < el.sample_count; ++s) {
-            const Vec3& p = out.samples[el.first_sample + s].p;
-            for (int k = 0; k < dimension; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+        for (int round = 0; round < max_rounds; ++round) {
+            Vec3 shift;
+            double worst = 0.0;
+            for (int s = 0; s < el.sample_count; ++s) {
+                const Vec3& p = out.samples[el.first_sample + s].p;
+                if (domain.inside(p)) continue;
+                Vec3 d = domain.closest_inside(p) - p;
+                if (dimension == 2) d.z = 0.0;
+                if (squared_norm(d) > worst) worst = squared_norm(d), shift = d;
+            }
+            if (worst == 0.0) break;
+            for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p += shift;
         }
-        Vec3 shift;
-        for (int k = 0; k < dimension; ++k) {
-            if (hi[k] - lo[k] > b.hi[k] - b.lo[k]) shift[k] = b.center()[k] - 0.5 * (lo[k] + hi[k]);
-            else if (lo[k] < b.lo[k]) shift[k] = b.lo[k] - lo[k];
-            else if (hi[k] > b.hi[k]) shift[k] = b.hi[k] - hi[k];
-        }
-        if (shift == Vec3{}) continue;
-        for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p += shift;
     }
 }
 
