@@ -34,7 +34,7 @@ const char* to_string(tessera::SearchMode s) {
 }
 
 struct SynthArgs {
-    std::string input, output, preview, input_domain, domain;
+    std::string input, output, preview, input_domain, domain, field;
     double scale = 2.0;
     std::string method = "det";
     std::string search, matching;
@@ -173,10 +173,13 @@ void run_synth(SynthArgs& args) {
 
     const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
     const tessera::Domain domain = output_domain(args, spec, exemplar);
+    if (!args.field.empty()) args.det.field = tessera::OrientationField::parse(args.field, exemplar.dimension, "--field");
     if (!args.quiet)
         std::cerr << "synth: " << exemplar.elements.size() << " elements in " << exemplar.domain.describe()
                   << " -> " << domain.describe() << " (method det, seed " << args.det.seed << ", "
-                  << args.det.iterations << " iterations)" << std::endl;
+                  << args.det.iterations << " iterations"
+                  << (args.det.field.active() ? ", field " + args.det.field.describe() : std::string()) << ")"
+                  << std::endl;
 
     interrupted = 0;
     std::signal(SIGINT, on_interrupt);
@@ -277,6 +280,11 @@ Subcommand add_synth_command(CLI::App& app) {
     cmd->add_option("--patch-candidates", args->det.patch_candidates,
                     "Random candidate patches tried per cell at initialization (>= 1).")
         ->capture_default_str();
+    cmd->add_option("--field", args->field,
+                    "Local orientation field of the output (Eq. 7): constant:DX,DY[,DZ] (one direction), "
+                    "radial:CX,CY[,CZ] (away from a centre; in 3D from the vertical axis through it) or "
+                    "vortex:CX,CY[,CZ] (circling a centre counter-clockwise about +z). The exemplar's +x axis "
+                    "follows the field. Default: none (the exemplar's frame everywhere).");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { run_synth(*args); }};
 }

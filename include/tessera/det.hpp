@@ -11,6 +11,7 @@
 
 #include "tessera/domain.hpp"
 #include "tessera/exemplar.hpp"
+#include "tessera/field.hpp"
 #include "tessera/progress.hpp"
 
 namespace tessera {
@@ -50,6 +51,8 @@ struct DetOptions {
     int threads = 0;
     // Seed of every random draw (counter-based: results do not depend on threads).
     std::uint64_t seed = 1;
+    // Local orientation field of the output (Eq. 7); none = the global frame.
+    OrientationField field;
 };
 
 // Synthesizes an arrangement of elements like `exemplar` filling `domain`.

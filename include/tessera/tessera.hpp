@@ -5,6 +5,7 @@
 #include "tessera/domain.hpp"
 #include "tessera/error.hpp"
 #include "tessera/exemplar.hpp"
+#include "tessera/field.hpp"
 #include "tessera/io.hpp"
 #include "tessera/metrics.hpp"
 #include "tessera/progress.hpp"

@@ -166,7 +166,10 @@ void assign_attributes(OutputState& state, const InputIndex& index, const Params
             el.radius = src.radius;
             el.attributes = src.attributes;
             el.scale = src.scale;
-            if (el.sample_count == 1) el.orientation = src.orientation;
+            // Single-sample elements take the source's orientation turned into the local frame (Eq. 7).
+            if (el.sample_count == 1)
+                el.orientation = params.field.active() ? params.field.frame(el.position, params.dimension) * src.orientation
+                                                       : src.orientation;
         }
     });
 }

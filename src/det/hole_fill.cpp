@@ -108,7 +108,8 @@ int fill_holes(InitResult& init, const Exemplar& exemplar, const Domain& domain,
         }
         if (d2 < min_gap2) break;  // no hole left
         const int src_index = static_cast<int>(rng.below(static_cast<std::uint64_t>(added), exemplar.elements.size()));
-        append_copy(init, exemplar, src_index, p - exemplar.elements[src_index].position, dim);
+        const Quat frame = params.field.frame(p, dim);
+        append_copy(init, exemplar, src_index, frame, p - frame.rotate(exemplar.elements[src_index].position), dim);
         grid.add(p);
         --missing;
         ++added;

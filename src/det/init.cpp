@@ -64,9 +64,19 @@ std::vector<double> closest_type_pairs(const Exemplar& exemplar, const std::vect
     return closest;
 }
 
+// Where a patch goes: the window around in_center is laid down around out_center,
+// turned by the local frame of the orientation field there (Eq. 7).
+struct PatchMap {
+    Vec3 in_center, out_center;
+    Quat rotation;
+    Vec3 to_output(const Vec3& p) const { return out_center + rotation.rotate(p - in_center); }
+    Vec3 to_input(const Vec3& q) const { return in_center + rotation.conjugate().rotate(q - out_center); }
+};
+
 }  // namespace
 
-int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Vec3& shift, int dimension) {
+int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,
+                int dimension) {
     Arrangement& out = init.arrangement;
     const Element& src = exemplar.elements[source];
     Element e = src;
@@ -76,13 +86,14 @@ int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Ve
     const int index_out = static_cast<int>(out.elements.size());
     for (int s = 0; s < src.sample_count; ++s) {
         Sample smp = exemplar.samples[src.first_sample + s];
-        smp.p += shift;
+        smp.p = rotation.rotate(smp.p) + shift;
         if (dimension == 2) smp.p.z = 0.0;
         smp.element = index_out;
         out.samples.push_back(smp);
         init.source_sample.push_back(src.first_sample + s);
     }
-    e.position = src.position + shift;
+    e.position = rotation.rotate(src.position) + shift;
+    e.orientation = rotation * src.orientation;
     if (dimension == 2) e.position.z = 0.0;
     out.elements.push_back(std::move(e));
     init.source_element.push_back(source);
@@ -142,8 +153,12 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
     std::vector<int> window;                               // scratch: input elements in a window
     const core::KeyedRng rng(options.seed, core::Purpose::patch_choice);
 
+    const Vec3 half = Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5;
     for (int c = 0; c < cells.count(); ++c) {
         const Vec3 clo = cells.cell_lo(c);
+        PatchMap map;
+        map.out_center = clo + half;
+        map.rotation = params.field.frame(map.out_center, dim);
         // Output elements already placed in the band around this cell.
         std::vector<int> band_elements;
         for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
@@ -156,7 +171,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
         });
 
         // Choose among random windows the one most consistent with the band.
-        Vec3 best_origin;
+        Vec3 best_center;
         double best_score = INFINITY;
         const int tries = band_elements.empty() ? 1 : options.patch_candidates;
         for (int j = 0; j < tries; ++j) {
@@ -165,10 +180,11 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                 const double span = (in_box.hi[k] - in_box.lo[k]) - patch;
                 origin[k] += span > 0.0 ? span * rng.uniform(static_cast<std::uint64_t>(c) * 64 * 3 + j * 3 + k) : 0.0;
             }
+            map.in_center = origin + half;
             double score = 0.0;
             // Placed output elements should find an input element of their type where they sit.
             for (int e : band_elements) {
-                const Vec3 q = out.elements[e].position - clo + origin;
+                const Vec3 q = map.to_input(out.elements[e].position);
                 const int type = out.elements[e].type;
                 const int hit = in_grid.nearest(q, params.spacing, [&](int i) { return exemplar.elements[i].type == type; });
                 double d2 = cap2;
@@ -176,9 +192,9 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                 score += d2;
             }
             // Input elements that would land in already placed cells should find a placed element.
-            in_grid.for_each_within(origin + Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5,
-                                    (0.5 * patch + band) * std::sqrt(static_cast<double>(dim)), [&](int i, double) {
-                const Vec3 q = in_centers[i] - origin + clo;
+            in_grid.for_each_within(map.in_center, (0.5 * patch + band) * std::sqrt(static_cast<double>(dim)),
+                                    [&](int i, double) {
+                const Vec3 q = map.to_output(in_centers[i]);
                 bool in_band = true, in_cell = true;
                 for (int k = 0; k < dim; ++k) {
                     in_band = in_band && q[k] >= clo[k] - band && q[k] <= clo[k] + patch + band;
@@ -193,17 +209,17 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                         d2 = std::min(d2, squared_norm(out.elements[e].position - q));
                 score += d2;
             });
-            if (score < best_score) best_score = score, best_origin = origin;
+            if (score < best_score) best_score = score, best_center = map.in_center;
         }
 
         // Copy whole elements whose centroid lies in the chosen window (and in the domain).
+        map.in_center = best_center;
         window.clear();
-        in_grid.for_each_within(best_origin + Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5,
-                                0.5 * patch * std::sqrt(static_cast<double>(dim)) + 1e-12,
+        in_grid.for_each_within(map.in_center, 0.5 * patch * std::sqrt(static_cast<double>(dim)) + 1e-12,
                                 [&](int i, double) { window.push_back(i); });
         std::sort(window.begin(), window.end());
         for (int i : window) {
-            const Vec3 q = in_centers[i] - best_origin + clo;
+            const Vec3 q = map.to_output(in_centers[i]);
             bool in_cell = true;
             for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
             if (!in_cell || !domain.inside(q)) continue;
@@ -216,7 +232,8 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                 }
             });
             if (duplicate) continue;
-            const int index_out = append_copy(result, exemplar, i, clo - best_origin, dim);
+            const int index_out = append_copy(result, exemplar, i, map.rotation,
+                                              map.out_center - map.rotation.rotate(map.in_center), dim);
             const int cell = cells.index_of(out.elements.back().position, dim);
             placed[cell >= 0 ? cell : c].push_back(index_out);
         }

@@ -22,9 +22,10 @@ struct InitResult {
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
                               const Params& params, const DetOptions& options);
 
-// Appends a copy of exemplar element `source` translated by `shift` (recording its
-// source samples and element); returns the new element's index.
-int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Vec3& shift, int dimension);
+// Appends a copy of exemplar element `source` moved by p -> rotation p + shift
+// (recording its source samples and element); returns the new element's index.
+int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,
+                int dimension);
 
 // Adds copies of exemplar elements at the emptiest places of the domain until the
 // output holds the exemplar's density (or no gap wider than half a spacing is left).

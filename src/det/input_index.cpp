@@ -60,6 +60,7 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
     p.alpha = options.alpha >= 0.0 ? options.alpha : p.spacing * p.spacing;
     p.lambda = options.lambda >= 0.0 ? options.lambda : p.spacing * p.spacing;
     p.matching = options.matching;
+    p.field = options.field;
     return p;
 }
 

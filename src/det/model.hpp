@@ -34,6 +34,7 @@ struct Params {
     // Weight of the pull of samples outside the domain back to its boundary.
     double wall_weight = 8.0;
     Matching matching = Matching::greedy;
+    OrientationField field;    // local frames of the output (Eq. 7)
 };
 
 // Matching key of a sample: samples pair only with samples of the same key.
@@ -98,6 +99,7 @@ struct OutputState {
     std::vector<double> cost;           // its cost (Eq. 1 + lambda Eq. 6)
     std::vector<std::vector<Pair>> pairs; // per output sample: its neighbourhood's pairings
     std::vector<int> source_element;    // input element each output element copies attributes from
+    std::vector<Quat> frame;            // per output sample: local frame of the field at it (Eq. 7)
 };
 
 }  // namespace tessera::det

@@ -23,14 +23,14 @@ struct Scratch {
 };
 
 // lambda * Eq. 6: the input neighbourhood n(s_i), shifted to p(s_o), should lie in the domain.
-double occupancy_term(const InputIndex& index, int i, const Vec3& center, const Domain& domain,
-                      const Params& params) {
+double occupancy_term(const InputIndex& index, int i, const Vec3& center, const Quat& frame, bool rotate,
+                      const Domain& domain, const Params& params) {
     const NeighborEntry* nb = index.neighbors(i);
     double sum = 0.0;
     const double r2 = params.radius * params.radius;
     for (int q = 0; q < index.neighbor_count(i); ++q) {
         if (squared_norm(nb[q].offset) > r2) continue;
-        const double c = domain.occupancy(center + nb[q].offset);
+        const double c = domain.occupancy(center + (rotate ? frame.rotate(nb[q].offset) : nb[q].offset));
         sum += (1.0 - c) * (1.0 - c);
     }
     return params.lambda * sum;
@@ -67,6 +67,10 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
     }
     core::SpatialGrid grid;
     grid.build(positions, params.radius, params.dimension);
+    const bool use_frames = params.field.active();
+    state.frame.assign(n, Quat{});
+    if (use_frames)
+        for (int i = 0; i < n; ++i) state.frame[i] = params.field.frame(positions[i], params.dimension);
 
     const std::vector<int> previous = state.match;
     state.match.resize(n, -1);
@@ -82,6 +86,11 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
         for (int so = begin; so < end; ++so) {
             gather_neighbors(grid, positions, positions[so], so, params.radius, params.dimension, state.key, type,
                              element, radius, s.out_nb, s.sort_buf, max_neighbors);
+            // Eq. 7: relative positions are measured in the local frame of the centre.
+            if (use_frames) {
+                const Quat inverse = state.frame[so].conjugate();
+                for (auto& e : s.out_nb) e.offset = inverse.rotate(e.offset);
+            }
             std::stable_sort(s.out_nb.begin(), s.out_nb.end(), [](const NeighborEntry& a, const NeighborEntry& b) {
                 return a.match_key < b.match_key;
             });
@@ -138,7 +147,8 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
                     }
                     c += params.alpha * q;
                 }
-                if (near_boundary) c += occupancy_term(index, i, positions[so], domain, params);
+                if (near_boundary)
+                    c += occupancy_term(index, i, positions[so], state.frame[so], use_frames, domain, params);
                 if (c >= best) continue;
                 c += match_neighborhoods(s.out_nb.data(), m, index.neighbors(i), index.neighbor_count(i), params,
                                          s.match, s.partner.data(), best - c);
@@ -159,7 +169,9 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
                 if (pi < 0) continue;
                 const double c = pair_cost(s.out_nb[q], in_nb[pi], params);
                 const double w = c <= params.cap2 ? 1.0 : params.cap2 / c;
-                pairs.push_back(Pair{s.out_nb[q].sample, in_nb[pi].sample, in_nb[pi].offset, w});
+                // Eq. 3 in the output frame: the input offset turned by the centre's local frame.
+                const Vec3 predicted = use_frames ? state.frame[so].rotate(in_nb[pi].offset) : in_nb[pi].offset;
+                pairs.push_back(Pair{s.out_nb[q].sample, in_nb[pi].sample, predicted, w});
             }
         }
     });

@@ -1,0 +1,125 @@
+// Procedural orientation fields and the frame of a direction (Eq. 7).
+#include "tessera/field.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+
+#include "tessera/error.hpp"
+
+namespace tessera {
+
+namespace {
+
+constexpr double degenerate = 1e-12;
+
+Vec3 unit_or_throw(const Vec3& v, const std::string& what) {
+    const double n = norm(v);
+    if (!is_finite(v) || !(n > degenerate)) throw Error(ErrorKind::option, what + " must be a finite, non-zero vector");
+    return v / n;
+}
+
+}  // namespace
+
+OrientationField OrientationField::constant(const Vec3& direction) {
+    OrientationField f;
+    f.kind_ = Kind::constant;
+    f.vector_ = unit_or_throw(direction, "the field direction");
+    return f;
+}
+
+OrientationField OrientationField::radial(const Vec3& center, const Vec3& axis) {
+    if (!is_finite(center)) throw Error(ErrorKind::option, "the field centre must be finite");
+    OrientationField f;
+    f.kind_ = Kind::radial;
+    f.vector_ = center;
+    f.axis_ = unit_or_throw(axis, "the field axis");
+    return f;
+}
+
+OrientationField OrientationField::vortex(const Vec3& center, const Vec3& axis) {
+    OrientationField f = radial(center, axis);
+    f.kind_ = Kind::vortex;
+    return f;
+}
+
+OrientationField OrientationField::parse(const std::string& text, int dimension, const std::string& parameter) {
+    const size_t colon = text.find(':');
+    const std::string kind = text.substr(0, colon);
+    std::vector<double> v;
+    if (colon != std::string::npos) {
+        std::stringstream in(text.substr(colon + 1));
+        std::string field;
+        while (std::getline(in, field, ',')) {
+            char* end = nullptr;
+            const double x = std::strtod(field.c_str(), &end);
+            if (field.empty() || *end != '\0')
+                throw Error(ErrorKind::option, parameter + ": '" + field + "' is not a number in '" + text + "'");
+            v.push_back(x);
+        }
+    }
+    if (v.size() != static_cast<size_t>(dimension))
+        throw Error(ErrorKind::option, parameter + ": expected constant|radial|vortex:" +
+                                           (dimension == 2 ? "x,y" : "x,y,z") + ", got '" + text + "'");
+    const Vec3 p{v[0], v[1], dimension == 3 ? v[2] : 0.0};
+    try {
+        if (kind == "constant") return constant(p);
+        if (kind == "radial") return radial(p);
+        if (kind == "vortex") return vortex(p);
+    } catch (const Error& e) {
+        throw Error(ErrorKind::option, parameter + ": " + e.what());
+    }
+    throw Error(ErrorKind::option, parameter + ": unknown field '" + kind + "' (constant, radial or vortex)");
+}
+
+Vec3 OrientationField::direction(const Vec3& p) const {
+    switch (kind_) {
+        case Kind::none: return {1, 0, 0};
+        case Kind::constant: return vector_;
+        case Kind::radial:
+        case Kind::vortex: {
+            Vec3 r = p - vector_;
+            r -= axis_ * dot(r, axis_);  // distance from the axis
+            const double n = norm(r);
+            if (!(n > degenerate)) return {};
+            r = r / n;
+            return kind_ == Kind::radial ? r : cross(axis_, r);
+        }
+    }
+    return {1, 0, 0};
+}
+
+Quat frame_from_direction(const Vec3& d, int dimension) {
+    if (!(norm(d) > degenerate)) return Quat{};
+    if (dimension == 2) return Quat::from_angle_z(std::atan2(d.y, d.x));
+    // Local axes: x = d; y perpendicular to x and to +z (horizontal) where possible; z = x cross y.
+    const Vec3 x = d / norm(d);
+    Vec3 y = cross(Vec3{0, 0, 1}, x);
+    if (norm(y) < 1e-9) y = cross(x, Vec3{1, 0, 0}).y < 0 ? Vec3{0, -1, 0} : Vec3{0, 1, 0};
+    y = y / norm(y);
+    const Vec3 z = cross(x, y);
+    Eigen::Matrix3d m;
+    m << x.x, y.x, z.x, x.y, y.y, z.y, x.z, y.z, z.z;
+    Eigen::Quaterniond q(m);
+    q.normalize();
+    if (q.w() < 0) q.coeffs() *= -1.0;
+    return Quat{q.w(), q.x(), q.y(), q.z()};
+}
+
+Quat OrientationField::frame(const Vec3& p, int dimension) const {
+    if (kind_ == Kind::none) return Quat{};
+    return frame_from_direction(direction(p), dimension);
+}
+
+std::string OrientationField::describe() const {
+    std::ostringstream s;
+    switch (kind_) {
+        case Kind::none: return "none";
+        case Kind::constant: s << "constant (" << vector_.x << "," << vector_.y << "," << vector_.z << ")"; break;
+        case Kind::radial: s << "radial about (" << vector_.x << "," << vector_.y << "," << vector_.z << ")"; break;
+        case Kind::vortex: s << "vortex about (" << vector_.x << "," << vector_.y << "," << vector_.z << ")"; break;
+    }
+    return s.str();
+}
+
+}  // namespace tessera
