@@ -53,6 +53,13 @@ struct DetOptions {
     std::uint64_t seed = 1;
     // Local orientation field of the output (Eq. 7); none = the global frame.
     OrientationField field;
+    // Gravity, along one axis; zero = automatic: -y in 2D, -z in 3D.
+    Vec3 gravity;
+    // Constrained selection at the floor: elements whose lowest sample lies within
+    // this distance of the domain boundary below them (along gravity), and elements
+    // of types marked floor, are floor elements; output floor elements copy only
+    // input floor elements and keep their elevation. 0 = only types marked floor.
+    double floor_distance = 0.0;
 };
 
 // Synthesizes an arrangement of elements like `exemplar` filling `domain`.

@@ -63,6 +63,15 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
     }
     Eigen::SparseMatrix<double> a(n, n);
     a.setFromTriplets(triplets.begin(), triplets.end());
+    // Constrained selection: floor samples keep their elevation (displacement 0 along
+    // gravity's axis), so that axis gets its own matrix with a strong diagonal there.
+    Eigen::SparseMatrix<double> a_gravity;
+    const bool hold_floor = params.floor_constraints && !state.floor.empty();
+    if (hold_floor) {
+        a_gravity = a;
+        for (int i = 0; i < n; ++i)
+            if (state.floor[i]) a_gravity.coeffRef(i, i) += params.floor_weight;
+    }
 
     AssignReport report;
     Eigen::MatrixXd delta = Eigen::MatrixXd::Zero(n, dim);
@@ -73,7 +82,7 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
             Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
             cg.setMaxIterations(cg_max_iterations);
             cg.setTolerance(params.cg_tolerance);
-            cg.compute(a);
+            cg.compute(hold_floor && k == params.gravity.axis ? a_gravity : a);
             delta.col(k) = cg.solve(rhs.col(k));
             iterations[k] = static_cast<int>(cg.iterations());
             converged[k] = cg.info() == Eigen::Success;
@@ -235,9 +244,27 @@ void update_poses(OutputState& state, const InputIndex&, int dimension) {
 
 AssignReport assign_step(OutputState& state, const InputIndex& index, const Domain& domain, const Params& params,
                          int threads) {
+    Arrangement& out = state.arrangement;
+    // Elevations of floor elements before the step, restored exactly after it (the
+    // solve holds them only up to its weight, and the rigid fit may tilt an element).
+    std::vector<double> elevation;
+    const bool hold_floor = params.floor_constraints && !state.floor.empty();
+    if (hold_floor) {
+        elevation.resize(out.elements.size());
+        for (size_t e = 0; e < out.elements.size(); ++e)
+            elevation[e] = element_elevation(out, out.elements[e], params.gravity);
+    }
     AssignReport report = assign_positions(state, params, threads, &domain);
     assign_attributes(state, index, params, threads);
     snap_rigid_elements(state, index, params.dimension, threads);
+    if (hold_floor) {
+        for (size_t e = 0; e < out.elements.size(); ++e) {
+            const Element& el = out.elements[e];
+            if (el.locked || !state.floor[el.first_sample]) continue;
+            const double shift = elevation[e] - element_elevation(out, el, params.gravity);
+            for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p[params.gravity.axis] += shift;
+        }
+    }
     update_poses(state, index, params.dimension);
     return report;
 }

@@ -61,6 +61,13 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
     p.lambda = options.lambda >= 0.0 ? options.lambda : p.spacing * p.spacing;
     p.matching = options.matching;
     p.field = options.field;
+    Vec3 gravity = options.gravity;
+    if (gravity == Vec3{}) gravity = exemplar.dimension == 2 ? Vec3{0, -1, 0} : Vec3{0, 0, -1};
+    p.gravity = resolve_gravity(gravity, exemplar.dimension);
+    if (!std::isfinite(options.floor_distance) || options.floor_distance < 0.0)
+        bad("--floor-distance must be >= 0");
+    p.floor_distance = options.floor_distance;
+    for (char f : floor_elements(exemplar, exemplar.domain, p.gravity, p.floor_distance)) p.floor_constraints |= f != 0;
     return p;
 }
 
@@ -177,6 +184,10 @@ InputIndex build_input_index(const Exemplar& exemplar, const Params& params, int
         index.nb.insert(index.nb.end(), entries.begin(), entries.end());
         index.nb_start[i + 1] = static_cast<int>(index.nb.size());
     }
+    const std::vector<char> floor_element =
+        floor_elements(exemplar, exemplar.domain, params.gravity, params.floor_distance);
+    index.floor.resize(n);
+    for (int i = 0; i < n; ++i) index.floor[i] = floor_element[index.element[i]];
     if (k > 0) build_similarity_sets(index, params, k, threads);
     return index;
 }

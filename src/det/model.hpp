@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/spatial_grid.hpp"
+#include "det/floor.hpp"
 #include "tessera/det.hpp"
 #include "tessera/exemplar.hpp"
 
@@ -35,6 +36,10 @@ struct Params {
     double wall_weight = 8.0;
     Matching matching = Matching::greedy;
     OrientationField field;    // local frames of the output (Eq. 7)
+    Gravity gravity;           // down
+    double floor_distance = 0.0;
+    bool floor_constraints = false;  // some exemplar element is a floor element
+    double floor_weight = 1e4;       // holds floor elevations in Eq. 4
 };
 
 // Matching key of a sample: samples pair only with samples of the same key.
@@ -72,6 +77,7 @@ struct InputIndex {
     std::vector<std::vector<Vec3>> key_positions;
     std::vector<core::SpatialGrid> key_grid;
     std::vector<int> sim_start, sim;      // k-coherence similarity sets (CSR)
+    std::vector<char> floor;              // per sample: of a floor element
 
     int size() const { return static_cast<int>(positions.size()); }
     const NeighborEntry* neighbors(int i) const { return nb.data() + nb_start[i]; }
@@ -100,6 +106,7 @@ struct OutputState {
     std::vector<std::vector<Pair>> pairs; // per output sample: its neighbourhood's pairings
     std::vector<int> source_element;    // input element each output element copies attributes from
     std::vector<Quat> frame;            // per output sample: local frame of the field at it (Eq. 7)
+    std::vector<char> floor;            // per output sample: of a floor element (constrained selection)
 };
 
 }  // namespace tessera::det

@@ -67,6 +67,13 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
     }
     core::SpatialGrid grid;
     grid.build(positions, params.radius, params.dimension);
+    // Constrained selection: which output samples belong to floor elements now.
+    state.floor.assign(n, 0);
+    if (params.floor_constraints) {
+        const std::vector<char> floor_element =
+            floor_elements(out, domain, params.gravity, params.floor_distance);
+        for (int i = 0; i < n; ++i) state.floor[i] = floor_element[element[i]];
+    }
     const bool use_frames = params.field.active();
     state.frame.assign(n, Quat{});
     if (use_frames)
@@ -119,6 +126,17 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
                 }
                 if (s.candidates.empty())
                     for (int i : index.by_key[key]) add_candidate(s, i);
+            }
+            if (params.floor_constraints) {
+                // Floor samples copy only input floor samples, the others only non-floor ones.
+                const char want = state.floor[so];
+                auto wrong = [&](int i) { return index.floor[i] != want; };
+                s.candidates.erase(std::remove_if(s.candidates.begin(), s.candidates.end(), wrong), s.candidates.end());
+                if (s.candidates.empty())
+                    for (int i : index.by_key[key])
+                        if (!wrong(i)) s.candidates.push_back(i);
+                if (s.candidates.empty())  // the exemplar has no such sample: unconstrained
+                    for (int i : index.by_key[key]) s.candidates.push_back(i);
             }
             // Deterministic order whatever produced them; the previous match goes first
             // so that its cost bounds (and cuts short) the evaluation of the others.

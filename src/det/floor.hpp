@@ -1,0 +1,39 @@
+// Constrained selection at the floor (section 5, "Constrained selection"): to keep
+// elements from floating, output elements on the floor may only copy input floor
+// elements (and the others only non-floor ones), and the assignment keeps the
+// elevation of floor elements fixed.
+//
+// An element is a floor element when its type is marked floor, or when
+// DetOptions::floor_distance > 0 and its lowest sample (along gravity) lies within
+// that distance of the domain's boundary below it: p + floor_distance * g is
+// outside the domain. The test uses only Domain::inside, so it works for boxes,
+// bowls and any other shape.
+#pragma once
+
+#include <vector>
+
+#include "tessera/exemplar.hpp"
+
+namespace tessera::det {
+
+// The axis (0, 1, 2) and sign (-1 or +1) of gravity; Error(option) unless axis-aligned.
+struct Gravity {
+    int axis = 1;
+    double sign = -1.0;
+    Vec3 vector() const {
+        Vec3 g;
+        g[axis] = sign;
+        return g;
+    }
+};
+Gravity resolve_gravity(const Vec3& gravity, int dimension);
+
+// Per element of `data`: is it a floor element in `domain`?
+std::vector<char> floor_elements(const Exemplar& data, const Domain& domain, const Gravity& gravity,
+                                 double floor_distance);
+
+// Elevation of an element: its lowest sample's coordinate along gravity's axis
+// (lowest in the direction gravity points).
+double element_elevation(const Exemplar& data, const Element& e, const Gravity& gravity);
+
+}  // namespace tessera::det
