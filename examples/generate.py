@@ -182,6 +182,26 @@ def rods_3d():
           "8 x 8 x 3 window (periodic in x and y, so rods may reach past the window's sides).")
 
 
+def striped_dots_2d():
+    """Figure 16 in spirit: small dots in a jittered square lattice, every third row of another
+    kind; with striped_dots_2d_edit.json, `tessera edit` grows and shifts one dot of a special
+    row and the change spreads to the dots with the same surroundings."""
+    rng = random.Random(17)
+    els = []
+    for j in range(15):
+        for i in range(15):
+            kind = "accent" if j % 3 == 1 else "dot"
+            x = i + 0.5 + rng.gauss(0, 0.03)
+            y = j + 0.5 + rng.gauss(0, 0.03)
+            els.append({"type": kind, "position": [r4(x), r4(y)], "radius": 0.15})
+    write("striped_dots_2d", 2, [15, 15], [{"name": "dot"}, {"name": "accent"}], els,
+          "Dots on a jittered square lattice (spacing 1), every third row of type 'accent'.")
+    edit = {"element": 7 * 15 + 7, "offset": [0.0, 0.25], "radius": 0.3}
+    with open(os.path.join(HERE, "striped_dots_2d_edit.json"), "w") as f:
+        json.dump(edit, f)
+        f.write("\n")
+
+
 if __name__ == "__main__":
     poisson_disk_2d()
     hex_jittered_2d()
@@ -189,3 +209,4 @@ if __name__ == "__main__":
     sticks_2d()
     spheres_3d()
     rods_3d()
+    striped_dots_2d()

@@ -34,7 +34,7 @@ const char* to_string(tessera::SearchMode s) {
 }
 
 struct SynthArgs {
-    std::string input, output, preview, input_domain, domain, field;
+    std::string input, output, preview, input_domain, domain, field, gravity;
     double scale = 2.0;
     std::string method = "det";
     std::string search, matching;
@@ -49,11 +49,13 @@ struct SynthArgs {
 struct DomainSpec {
     std::vector<double> size;            // W,H[,D] form
     std::optional<tessera::Domain> box;  // corner form
+    std::string shape, argument;         // polygon:, mask:, mesh:, shell: forms (built after loading)
 };
 
 const char* const domain_usage =
-    "expected box:W,H[,D] (size from the input domain's lower corner) or "
-    "box:xmin,ymin,xmax,ymax[,zmin,zmax] (corners)";
+    "expected box:W,H[,D] (size from the input domain's lower corner), "
+    "box:xmin,ymin,xmax,ymax[,zmin,zmax] (corners), polygon:FILE.json, polygon:x1,y1,x2,y2,..., "
+    "mask:FILE.png[@xmin,ymin,xmax,ymax], mesh:FILE[,resolution] or shell:FILE,thickness[,resolution]";
 
 std::optional<double> parse_double(std::string text) {
     const size_t first = text.find_first_not_of(" \t");
@@ -66,7 +68,96 @@ std::optional<double> parse_double(std::string text) {
     return value;
 }
 
+// Splits "a,b,c" into numbers; nullopt if any field is not a number.
+std::optional<std::vector<double>> number_list(const std::string& text) {
+    std::vector<double> values;
+    size_t start = 0;
+    while (true) {
+        const size_t comma = text.find(',', start);
+        const auto value = parse_double(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (!value) return std::nullopt;
+        values.push_back(*value);
+        if (comma == std::string::npos) return values;
+        start = comma + 1;
+    }
+}
+
+// The shaped forms (docs/cli.md): polygon:FILE.json | polygon:x1,y1,x2,y2,...,
+// mask:FILE.png[@xmin,ymin,xmax,ymax], mesh:FILE[,resolution], shell:FILE,thickness[,resolution].
+tessera::Domain shaped_domain(const SynthArgs& args, const DomainSpec& spec, const tessera::Exemplar& exemplar) {
+    const std::string& a = spec.argument;
+    const auto need = [&](int dimension) {
+        if (exemplar.dimension != dimension)
+            throw tessera::Error(tessera::ErrorKind::domain, "--domain " + args.domain + " is " + std::to_string(dimension) +
+                                                                 "D but " + args.input + " is " +
+                                                                 std::to_string(exemplar.dimension) + "D");
+    };
+    // FILE followed by ",numbers": the file name is everything before the first comma
+    // that starts a list of numbers.
+    const auto file_and_numbers = [&](std::string& file, std::vector<double>& numbers) {
+        file = a;
+        numbers.clear();
+        for (size_t comma = a.find(','); comma != std::string::npos; comma = a.find(',', comma + 1)) {
+            if (const auto list = number_list(a.substr(comma + 1))) {
+                file = a.substr(0, comma);
+                numbers = *list;
+                return;
+            }
+        }
+    };
+    if (spec.shape == "polygon") {
+        need(2);
+        if (a.size() > 5 && a.substr(a.size() - 5) == ".json") return tessera::load_domain_json(a, 2);
+        const auto values = number_list(a);
+        if (!values || values->size() < 6 || values->size() % 2 != 0)
+            fail_option("--domain: expected polygon:FILE.json or polygon:x1,y1,x2,y2,x3,y3,... (at least 3 points), got '" +
+                        args.domain + "'");
+        std::vector<tessera::Vec3> outer;
+        for (size_t i = 0; i < values->size(); i += 2) outer.push_back({(*values)[i], (*values)[i + 1], 0.0});
+        return tessera::Domain::polygon(outer);
+    }
+    if (spec.shape == "mask") {
+        need(2);
+        const size_t at = a.rfind('@');
+        if (at == std::string::npos) {
+            const tessera::Box b = exemplar.domain.scaled(args.scale).bounds();
+            return tessera::Domain::mask(a, b.lo, b.hi);
+        }
+        const tessera::Domain box = tessera::parse_box_domain(a.substr(at + 1), "--domain mask:FILE@");
+        if (box.dimension() != 2) fail_option("--domain: a mask box is xmin,ymin,xmax,ymax, got '" + args.domain + "'");
+        return tessera::Domain::mask(a.substr(0, at), box.bounds().lo, box.bounds().hi);
+    }
+    std::string file;
+    std::vector<double> numbers;
+    file_and_numbers(file, numbers);
+    need(3);
+    const auto resolution = [&](size_t index) {
+        if (numbers.size() <= index) return 128;
+        const double r = numbers[index];
+        if (r != std::floor(r) || r < 16 || r > 1024)
+            fail_option("--domain: the resolution must be an integer from 16 to 1024, got '" + args.domain + "'");
+        return static_cast<int>(r);
+    };
+    if (spec.shape == "mesh") {
+        if (numbers.size() > 1) fail_option("--domain: expected mesh:FILE[,resolution], got '" + args.domain + "'");
+        return tessera::Domain::mesh(file, resolution(0));
+    }
+    if (numbers.empty() || numbers.size() > 2 || !(numbers[0] > 0.0))
+        fail_option("--domain: expected shell:FILE,thickness[,resolution] with thickness > 0, got '" + args.domain + "'");
+    return tessera::Domain::shell(file, numbers[0], resolution(1));
+}
+
 DomainSpec parse_domain_spec(const std::string& text) {
+    for (const char* shape : {"polygon", "mask", "mesh", "shell"}) {
+        const std::string prefix = std::string(shape) + ":";
+        if (text.rfind(prefix, 0) == 0) {
+            DomainSpec spec;
+            spec.shape = shape;
+            spec.argument = text.substr(prefix.size());
+            if (spec.argument.empty()) fail_option("--domain: nothing after '" + prefix + "' in '" + text + "'");
+            return spec;
+        }
+    }
     const std::string prefix = "box:";
     if (text.rfind(prefix, 0) != 0)
         fail_option("--domain: " + std::string(domain_usage) + ", got '" + text + "'");
@@ -103,6 +194,7 @@ DomainSpec parse_domain_spec(const std::string& text) {
 tessera::Domain output_domain(const SynthArgs& args, const std::optional<DomainSpec>& spec,
                               const tessera::Exemplar& exemplar) {
     if (!spec) return exemplar.domain.scaled(args.scale);
+    if (!spec->shape.empty()) return shaped_domain(args, *spec, exemplar);
     const auto mismatch = [&](int dimension) {
         throw tessera::Error(tessera::ErrorKind::domain,
                              "--domain " + args.domain + " is " + std::to_string(dimension) + "D but " +
@@ -173,7 +265,19 @@ void run_synth(SynthArgs& args) {
 
     const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
     const tessera::Domain domain = output_domain(args, spec, exemplar);
+    if (!args.quiet && !domain.notes().empty()) std::cerr << "synth: note: " << domain.notes() << std::endl;
     if (!args.field.empty()) args.det.field = tessera::OrientationField::parse(args.field, exemplar.dimension, "--field");
+    if (!args.gravity.empty()) {
+        // An axis with its sign: -z, +y, x, ...
+        const std::string& g = args.gravity;
+        const bool negative = g[0] == '-';
+        const std::string axis = (g[0] == '-' || g[0] == '+') ? g.substr(1) : g;
+        if (axis != "x" && axis != "y" && axis != "z")
+            fail_option("--gravity: expected an axis with its sign (-x, +x, -y, +y, -z, +z), got '" + g + "'");
+        tessera::Vec3 v;
+        v[axis[0] - 'x'] = negative ? -1.0 : 1.0;
+        args.det.gravity = v;
+    }
     if (!args.quiet)
         std::cerr << "synth: " << exemplar.elements.size() << " elements in " << exemplar.domain.describe()
                   << " -> " << domain.describe() << " (method det, seed " << args.det.seed << ", "
@@ -279,6 +383,15 @@ Subcommand add_synth_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--patch-candidates", args->det.patch_candidates,
                     "Random candidate patches tried per cell at initialization (>= 1).")
+        ->capture_default_str();
+    cmd->add_option("--gravity", args->gravity,
+                    "Direction of gravity, an axis with its sign (-x, +x, -y, +y, -z, +z). Default: -y in 2D, "
+                    "-z in 3D.");
+    cmd->add_option("--floor-distance", args->det.floor_distance,
+                    "Constrained selection at the floor: elements whose lowest sample is within this distance of "
+                    "the domain boundary below them (and elements of types marked floor) are floor elements; "
+                    "output floor elements copy only input floor elements and keep their elevation. "
+                    "0 = only types marked floor.")
         ->capture_default_str();
     cmd->add_option("--field", args->field,
                     "Local orientation field of the output (Eq. 7): constant:DX,DY[,DZ] (one direction), "

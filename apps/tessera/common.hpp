@@ -69,5 +69,6 @@ struct Subcommand {
 Subcommand add_synth_command(CLI::App& app);
 Subcommand add_metrics_command(CLI::App& app);
 Subcommand add_render_command(CLI::App& app);
+Subcommand add_edit_command(CLI::App& app);
 
 }  // namespace tessera_cli

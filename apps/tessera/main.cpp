@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
         "Exit codes: 0 ok, 2 bad option, 3 invalid input, 4 invalid domain, 5 file error, "
         "70 internal error, 130 interrupted.");
 
-    const Subcommand commands[] = {add_synth_command(app), add_metrics_command(app), add_render_command(app)};
+    const Subcommand commands[] = {add_synth_command(app), add_metrics_command(app), add_render_command(app),
+                                    add_edit_command(app)};
 
     try {
         app.parse(argc, argv);

@@ -35,6 +35,10 @@ void save(const Arrangement& data, const std::string& path);
 Exemplar parse_json(const std::string& text, const std::string& source);
 Exemplar parse_csv(const std::string& text, const std::string& source, const LoadOptions& options = {});
 std::string to_json(const Exemplar& data, const RunStats* stats = nullptr);
+// A JSON file holding just a "domain" object (docs/format.md), as `--domain polygon:FILE.json`
+// takes; "type" may be omitted for a polygon ({"outer": [...], "holes": [...]}).
+// Files it names are relative to `path`'s directory.
+Domain load_domain_json(const std::string& path, int dimension);
 std::string to_csv(const Exemplar& data);
 std::string to_ply(const Exemplar& data);
 

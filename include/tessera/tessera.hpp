@@ -3,6 +3,7 @@
 
 #include "tessera/det.hpp"
 #include "tessera/domain.hpp"
+#include "tessera/edit.hpp"
 #include "tessera/error.hpp"
 #include "tessera/exemplar.hpp"
 #include "tessera/field.hpp"

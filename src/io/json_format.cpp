@@ -9,6 +9,7 @@
 // The writer puts one element per line: readable, diffable, and still a plain
 // JSON document; doubles are written in the shortest form that reads back exactly.
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -35,6 +36,14 @@ constexpr int format_version = 1;
 class JsonReader {
 public:
     explicit JsonReader(const std::string& source) : source_(source) {}
+
+    Domain read_domain_document(const std::string& text, int dimension) {
+        dimension_ = dimension;
+        Json doc = parse(text);
+        if (!doc.is_object()) fail("", "the document must be a JSON object");
+        if (!doc.contains("type")) doc["type"] = "polygon";
+        return read_domain(doc);
+    }
 
     Exemplar read(const std::string& text) {
         const Json doc = parse(text);
@@ -155,17 +164,76 @@ private:
     Domain read_domain(const Json& value) const {
         const std::string where = "domain";
         if (!value.is_object()) fail(where, "must be an object, got " + value.dump());
-        check_keys(value, {"type", "min", "max"}, where);
         const std::string type = string(require(value, "type", where), member(where, "type"));
-        if (type != "box")
-            fail(member(where, "type"), "unsupported domain type '" + type + "' (supported: box)");
-        const Vec3 lo = point(require(value, "min", where), member(where, "min"));
-        const Vec3 hi = point(require(value, "max", where), member(where, "max"));
+        const auto need_dimension = [&](int d) {
+            if (dimension_ != d)
+                fail(member(where, "type"), "a " + type + " domain is " + std::to_string(d) + "D but the file is " +
+                                                std::to_string(dimension_) + "D");
+        };
+        // Files named in the domain are relative to this JSON file's directory.
+        const auto file = [&](const char* key) {
+            const std::filesystem::path f = string(require(value, key, where), member(where, key));
+            if (f.is_absolute() || source_.empty()) return f.string();
+            return (std::filesystem::path(source_).parent_path() / f).lexically_normal().string();
+        };
+        const auto resolution = [&]() {
+            const auto it = value.find("resolution");
+            return it == value.end() ? 128 : static_cast<int>(integer(*it, member(where, "resolution")));
+        };
+        const auto scale = [&](Domain d) {
+            const auto it = value.find("scale");
+            return it == value.end() ? d : d.scaled(number(*it, member(where, "scale")));
+        };
         try {
-            return Domain::box(lo, hi, dimension_);
+            if (type == "box") {
+                check_keys(value, {"type", "min", "max"}, where);
+                const Vec3 lo = point(require(value, "min", where), member(where, "min"));
+                const Vec3 hi = point(require(value, "max", where), member(where, "max"));
+                return Domain::box(lo, hi, dimension_);
+            }
+            if (type == "polygon") {
+                check_keys(value, {"type", "outer", "holes"}, where);
+                need_dimension(2);
+                const auto ring = [&](const Json& r, const std::string& at) {
+                    if (!r.is_array()) fail(at, "must be an array of [x, y] points, got " + r.dump());
+                    std::vector<Vec3> points;
+                    for (size_t i = 0; i < r.size(); ++i) points.push_back(point(r[i], at + "[" + std::to_string(i) + "]"));
+                    return points;
+                };
+                std::vector<std::vector<Vec3>> holes;
+                const auto it = value.find("holes");
+                if (it != value.end()) {
+                    if (!it->is_array()) fail(member(where, "holes"), "must be an array of rings, got " + it->dump());
+                    for (size_t h = 0; h < it->size(); ++h)
+                        holes.push_back(ring((*it)[h], member(where, "holes") + "[" + std::to_string(h) + "]"));
+                }
+                return Domain::polygon(ring(require(value, "outer", where), member(where, "outer")), holes);
+            }
+            if (type == "mask") {
+                check_keys(value, {"type", "image", "min", "max", "threshold"}, where);
+                need_dimension(2);
+                const Vec3 lo = point(require(value, "min", where), member(where, "min"));
+                const Vec3 hi = point(require(value, "max", where), member(where, "max"));
+                const auto it = value.find("threshold");
+                const double threshold = it == value.end() ? 0.5 : number(*it, member(where, "threshold"));
+                return Domain::mask(file("image"), lo, hi, threshold);
+            }
+            if (type == "mesh") {
+                check_keys(value, {"type", "file", "resolution", "scale"}, where);
+                need_dimension(3);
+                return scale(Domain::mesh(file("file"), resolution()));
+            }
+            if (type == "shell") {
+                check_keys(value, {"type", "file", "thickness", "resolution", "scale"}, where);
+                need_dimension(3);
+                const double thickness = number(require(value, "thickness", where), member(where, "thickness"));
+                return scale(Domain::shell(file("file"), thickness, resolution()));
+            }
         } catch (const Error& e) {
+            if (e.kind() == ErrorKind::io) throw;
             throw Error(e.kind(), source_ + ": " + where + ": " + e.what());
         }
+        fail(member(where, "type"), "unsupported domain type '" + type + "' (supported: box, polygon, mask, mesh, shell)");
     }
 
     void read_types(const Json& doc, Exemplar& ex) {
@@ -399,18 +467,63 @@ void append_array(std::string& out, const std::vector<OrderedJson>& items) {
     out += "  ]";
 }
 
+// The "domain" object (docs/format.md). Files are written as absolute paths: the
+// writer does not know where the document will be read from.
+OrderedJson domain_json(const Domain& d, int dimension) {
+    OrderedJson out;
+    const DomainSource src = d.source();
+    const auto world = [&](const Vec3& q) { return src.origin + (q - src.origin) * src.scale; };
+    const auto absolute = [](const std::string& f) { return std::filesystem::absolute(f).lexically_normal().string(); };
+    switch (d.kind()) {
+        case Domain::Kind::box:
+            out["type"] = "box";
+            out["min"] = point_json(d.bounds().lo, dimension);
+            out["max"] = point_json(d.bounds().hi, dimension);
+            break;
+        case Domain::Kind::polygon: {
+            out["type"] = "polygon";
+            const auto ring = [&](const std::vector<Vec3>& r) {
+                OrderedJson a = OrderedJson::array();
+                for (const Vec3& v : r) a.push_back(point_json(world(v), 2));
+                return a;
+            };
+            out["outer"] = ring(src.outer);
+            OrderedJson holes = OrderedJson::array();
+            for (const auto& h : src.holes) holes.push_back(ring(h));
+            out["holes"] = holes;
+            break;
+        }
+        case Domain::Kind::mask:
+            out["type"] = "mask";
+            out["image"] = absolute(src.file);
+            out["min"] = point_json(world(src.box.lo), 2);
+            out["max"] = point_json(world(src.box.hi), 2);
+            out["threshold"] = src.threshold;
+            break;
+        case Domain::Kind::mesh:
+        case Domain::Kind::shell:
+            out["type"] = d.kind() == Domain::Kind::mesh ? "mesh" : "shell";
+            out["file"] = absolute(src.file);
+            if (d.kind() == Domain::Kind::shell) out["thickness"] = src.thickness;
+            out["resolution"] = src.resolution;
+            if (src.scale != 1.0) out["scale"] = src.scale;
+            break;
+    }
+    return out;
+}
+
 }  // namespace
 
 Exemplar parse_json(const std::string& text, const std::string& source) {
     return JsonReader(source).read(text);
 }
 
+Domain load_domain_json(const std::string& path, int dimension) {
+    return JsonReader(path).read_domain_document(read_file(path), dimension);
+}
+
 std::string to_json(const Exemplar& data, const RunStats* stats) {
-    const Box& box = data.domain.bounds();
-    OrderedJson domain;
-    domain["type"] = "box";
-    domain["min"] = point_json(box.lo, data.dimension);
-    domain["max"] = point_json(box.hi, data.dimension);
+    const OrderedJson domain = domain_json(data.domain, data.dimension);
 
     std::vector<OrderedJson> types;
     for (const auto& t : data.types)

@@ -450,3 +450,40 @@ INSTANTIATE_TEST_SUITE_P(Cli, CliErrors, ::testing::ValuesIn(error_cases),
                          [](const ::testing::TestParamInfo<ErrorCase>& info) { return info.param.name; });
 
 }  // namespace
+
+// ---- edit ------------------------------------------------------------------------
+
+namespace {
+
+class CliEdit : public CliFixture {};
+
+TEST_F(CliEdit, SpreadsTheEditAndReportsTheCount) {
+    const Result r = run("edit " + q(example("striped_dots_2d.json")) + " " + q(example("striped_dots_2d_edit.json")) +
+                         " -o " + q(path("edited.json")));
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("changed "), std::string::npos);
+    const tessera::Exemplar before = tessera::load(example("striped_dots_2d.json"));
+    const tessera::Exemplar after = tessera::load(path("edited.json"));
+    ASSERT_EQ(before.elements.size(), after.elements.size());
+    int grown = 0;
+    for (size_t i = 0; i < after.elements.size(); ++i) {
+        if (after.elements[i].radius == 0.3) {
+            ++grown;
+            EXPECT_EQ(after.types[after.elements[i].type].name, "accent");  // only the edited kind
+        }
+    }
+    EXPECT_GT(grown, 30);
+    EXPECT_LT(grown, 75);  // 5 accent rows of 15, not all of them (the row ends differ)
+}
+
+TEST_F(CliEdit, UnknownElementFailsAndWritesNothing) {
+    write("bad.json", R"({"element": 99999, "offset": [1, 0]})");
+    const Result r = run("edit " + q(example("striped_dots_2d.json")) + " " + q(path("bad.json")) + " -o " +
+                         q(path("out.json")));
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(line_count(r.err), 1);
+    EXPECT_NE(r.err.find("99999"), std::string::npos);
+    EXPECT_EQ(work_files(), std::set<std::string>{"bad.json"});
+}
+
+}  // namespace

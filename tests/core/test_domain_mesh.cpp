@@ -1,0 +1,200 @@
+// Tests of the 3D mesh and shell domains: an icosphere and a cube written as OBJ/PLY
+// here, voxel measure against the true volume, inside away from the surface, a
+// crack (one triangle removed), an open sheet (error), shell volume, parse errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+
+#include "tessera/domain.hpp"
+#include "tessera/error.hpp"
+#include "tessera/mesh.hpp"
+
+using namespace tessera;
+
+namespace {
+
+// Unit icosphere (outward, counter-clockwise), `levels` subdivisions: 20 * 4^levels triangles.
+TriangleMesh icosphere(int levels) {
+    const double t = (1 + std::sqrt(5.0)) / 2;
+    TriangleMesh m;
+    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (Vec3& v : m.vertices) v = v * (1.0 / norm(v));
+    m.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                   {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (int l = 0; l < levels; ++l) {
+        std::map<std::pair<int, int>, int> mid;
+        auto midpoint = [&](int a, int b) {
+            const auto key = std::minmax(a, b);
+            auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            const Vec3 v = (m.vertices[a] + m.vertices[b]) * 0.5;
+            m.vertices.push_back(v * (1.0 / norm(v)));
+            return mid[key] = int(m.vertices.size()) - 1;
+        };
+        std::vector<std::array<int, 3>> next;
+        for (const auto& f : m.triangles) {
+            const int a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+            next.push_back({f[0], a, c}), next.push_back({f[1], b, a}), next.push_back({f[2], c, b});
+            next.push_back({a, b, c});
+        }
+        m.triangles = next;
+    }
+    return m;
+}
+
+// Volume of a closed mesh (divergence theorem): the exact volume the voxels approximate.
+double mesh_volume(const TriangleMesh& m) {
+    double v = 0;
+    for (const auto& f : m.triangles) v += dot(m.vertices[f[0]], cross(m.vertices[f[1]], m.vertices[f[2]])) / 6.0;
+    return v;
+}
+
+std::string write(const std::string& name, const std::string& text) {
+    const std::string path = (std::filesystem::temp_directory_path() / name).string();
+    std::ofstream(path) << text;
+    return path;
+}
+
+}  // namespace
+
+TEST(DomainMesh, CubeFromObjHasTheRightVolume) {
+    const std::string path = write("tessera_cube.obj",
+                                   "# unit cube, quads\n"
+                                   "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nv 0 0 2\nv 2 0 2\nv 2 2 2\nv 0 2 2\n"
+                                   "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    const Domain d = Domain::mesh(path, 64);
+    EXPECT_EQ(d.kind(), Domain::Kind::mesh);
+    EXPECT_NEAR(d.measure(), 8.0, 0.03 * 8.0);
+    EXPECT_TRUE(d.inside({1, 1, 1}));
+    EXPECT_TRUE(d.inside({0.1, 1.9, 0.1}));
+    EXPECT_FALSE(d.inside({2.2, 1, 1}));
+    EXPECT_EQ(d.notes(), "");
+    std::filesystem::remove(path);
+}
+
+TEST(DomainMesh, SphereVolumeInsideAndBoundaryQueries) {
+    const TriangleMesh m = icosphere(3);  // 1280 triangles
+    const Domain d = Domain::mesh(m, 64, "sphere");
+    const double volume = mesh_volume(m);
+    EXPECT_NEAR(d.measure(), volume, 0.03 * volume);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> u(-1.3, 1.3);
+    const double h = 2.0 / 60;  // cell size
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3 p{u(rng), u(rng), u(rng)};
+        const double r = norm(p);
+        if (r < 0.97) { EXPECT_TRUE(d.inside(p)) << r; }
+        if (r > 1.02) { EXPECT_FALSE(d.inside(p)) << r; }
+        if (d.inside(p)) {
+            // Never more than the true distance to the (voxel) boundary, up to a cell.
+            EXPECT_LE(d.distance_to_boundary(p), std::max(0.0, 1.0 - r) + h) << r;
+        } else {
+            const Vec3 q = d.closest_inside(p);
+            EXPECT_TRUE(d.inside(q));
+            EXPECT_NEAR(norm(q), 1.0, 2 * h);
+        }
+    }
+}
+
+TEST(DomainMesh, ACrackStillGivesTheRightInside) {
+    TriangleMesh m = icosphere(3);
+    m.triangles.erase(m.triangles.begin() + 100);
+    const Domain d = Domain::mesh(m, 64, "cracked.obj");
+    EXPECT_NEAR(d.measure(), mesh_volume(icosphere(3)), 0.03 * 4.0);
+    EXPECT_NE(d.notes().find("3 boundary edges"), std::string::npos) << d.notes();
+    EXPECT_NE(d.notes().find("winding number"), std::string::npos);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-1.3, 1.3);
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3 p{u(rng), u(rng), u(rng)};
+        if (norm(p) < 0.95) { EXPECT_TRUE(d.inside(p)); }
+        if (norm(p) > 1.05) { EXPECT_FALSE(d.inside(p)); }
+    }
+}
+
+TEST(DomainMesh, AnOpenSheetEnclosesNoVolume) {
+    TriangleMesh sheet;
+    sheet.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.2}, {0, 1, 0.2}};  // planar, tilted
+    sheet.triangles = {{0, 1, 2}, {0, 2, 3}};
+    try {
+        Domain::mesh(sheet, 32, "sheet.obj");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::domain);
+        EXPECT_NE(std::string(e.what()).find("encloses no volume"), std::string::npos) << e.what();
+    }
+}
+
+TEST(DomainMesh, ShellVolumeIsCloseToTheAnalyticShell) {
+    const TriangleMesh m = icosphere(3);
+    const double thickness = 0.25;
+    const Domain d = Domain::shell(m, thickness, 64, "sphere");
+    EXPECT_EQ(d.kind(), Domain::Kind::shell);
+    // The polyhedron's inscribed radius is a little below 1: use its volume-equivalent radius.
+    const double r = std::cbrt(mesh_volume(m) * 3 / (4 * M_PI));
+    const double expected = 4.0 / 3.0 * M_PI * (r * r * r - std::pow(r - thickness, 3));
+    EXPECT_NEAR(d.measure(), expected, 0.05 * expected);
+    EXPECT_FALSE(d.inside({0, 0, 0}));
+    EXPECT_TRUE(d.inside({0, 0, 0.88}));
+    EXPECT_FALSE(d.inside({0, 0, 1.1}));
+    EXPECT_THROW(Domain::shell(m, 0.0, 64, "sphere"), Error);
+}
+
+TEST(DomainMesh, ScaledMeshScalesMeasure) {
+    const Domain d = Domain::mesh(icosphere(2), 32, "sphere");
+    EXPECT_NEAR(d.scaled(2.0).measure(), 8 * d.measure(), 1e-9);
+    EXPECT_TRUE(d.scaled(2.0).inside(d.bounds().lo + (d.bounds().center() - d.bounds().lo) * 2.0));
+}
+
+TEST(DomainMesh, TranslatedOverlapOfASphereAtZeroIsItsVolume) {
+    const Domain d = Domain::mesh(icosphere(2), 32, "sphere");
+    EXPECT_NEAR(d.translated_overlap({0, 0, 0}), d.measure(), 0.05 * d.measure());
+    EXPECT_DOUBLE_EQ(d.translated_overlap({3, 0, 0}), 0.0);
+}
+
+TEST(MeshIo, PlyReadsAndErrorsNameFileAndLine) {
+    const std::string ply = write("tessera_tet.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                  "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                                  "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    const TriangleMesh m = read_triangle_mesh(ply);
+    EXPECT_EQ(m.vertices.size(), 4u);
+    EXPECT_EQ(m.triangles.size(), 4u);
+    EXPECT_NEAR(mesh_volume(m), 1.0 / 6.0, 1e-12);
+    const std::string bad = write("tessera_bad.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                                  "property float z\nend_header\n0 zero 0\n");
+    try {
+        read_triangle_mesh(bad);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::input);
+        EXPECT_NE(std::string(e.what()).find("tessera_bad.ply:8:"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(ply);
+    std::filesystem::remove(bad);
+}
+
+TEST(MeshIo, ObjErrorsNameFileAndLine) {
+    const std::string obj = write("tessera_bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n");
+    try {
+        read_triangle_mesh(obj);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::input);
+        EXPECT_NE(std::string(e.what()).find("tessera_bad.obj:5:"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(parse_obj("v 0 0 x\n", "a.obj"), Error);
+    try {
+        read_triangle_mesh("/nonexistent/bowl.obj");
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::io);
+    }
+    std::filesystem::remove(obj);
+}
