@@ -170,15 +170,44 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
             }
         });
 
+        // Probes of the cell and its band for boundary-occupancy similarity: only cells
+        // that touch the output boundary need them (elsewhere every window agrees).
+        std::vector<Vec3> probes;
+        {
+            constexpr int per_axis = 5;
+            const double step = (patch + 2.0 * band) / (per_axis - 1);
+            bool touches_boundary = false;
+            for (int z = 0; z < (dim == 3 ? per_axis : 1); ++z)
+                for (int y = 0; y < per_axis; ++y)
+                    for (int x = 0; x < per_axis; ++x) {
+                        const Vec3 q = clo - Vec3{band, band, dim == 3 ? band : 0.0} +
+                                       Vec3{x * step, y * step, dim == 3 ? z * step : 0.0};
+                        probes.push_back(q);
+                        touches_boundary = touches_boundary || !domain.inside(q);
+                    }
+            if (!touches_boundary) probes.clear();
+        }
+
         // Choose among random windows the one most consistent with the band.
         Vec3 best_center;
         double best_score = INFINITY;
-        const int tries = band_elements.empty() ? 1 : options.patch_candidates;
+        const int tries = band_elements.empty() && probes.empty() ? 1 : options.patch_candidates;
         for (int j = 0; j < tries; ++j) {
             Vec3 origin = in_box.lo;
             for (int k = 0; k < dim; ++k) {
                 const double span = (in_box.hi[k] - in_box.lo[k]) - patch;
                 origin[k] += span > 0.0 ? span * rng.uniform(static_cast<std::uint64_t>(c) * 64 * 3 + j * 3 + k) : 0.0;
+                // With floor constraints the exemplar's sides are physical (a floor, walls): a
+                // cell on a side of the output's bounds takes its window flush with the same
+                // side of the exemplar, so boundary layers line up. (Without them the exemplar
+                // is a window cut from a larger pattern and any window is as good.)
+                if (params.field.active() || !params.floor_constraints) continue;
+                if (clo[k] <= out_box.lo[k]) {
+                    origin[k] = in_box.lo[k];
+                } else if (clo[k] + patch >= out_box.hi[k]) {
+                    const double flush = in_box.hi[k] - (out_box.hi[k] - clo[k]);
+                    if (flush >= in_box.lo[k]) origin[k] = flush;
+                }
             }
             map.in_center = origin + half;
             double score = 0.0;
@@ -209,6 +238,10 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                         d2 = std::min(d2, squared_norm(out.elements[e].position - q));
                 score += d2;
             });
+            // Section 4.1: prefer input patches whose boundary occupancy resembles the output's
+            // here (a probe inside one domain but outside the other costs like a missing element).
+            for (const Vec3& q : probes)
+                if (domain.inside(q) != exemplar.domain.inside(map.to_input(q))) score += cap2;
             if (score < best_score) best_score = score, best_center = map.in_center;
         }
 
