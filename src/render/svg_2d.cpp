@@ -71,7 +71,17 @@ std::string render_svg_2d(const Exemplar& data, const RenderOptions& options) {
     out << "<rect x=\"" << num(f.lo.x) << "\" y=\"" << num(-f.hi.y) << "\" width=\"" << num(vw) << "\" height=\""
         << num(vh) << "\" fill=\"#ffffff\"/>\n";
     out << "<g transform=\"scale(1,-1)\">\n";
-    if (options.show_domain) {
+    if (options.show_domain && data.domain.kind() == Domain::Kind::polygon) {
+        const DomainSource src = data.domain.source();
+        std::vector<std::vector<Vec3>> rings = src.holes;
+        rings.push_back(src.outer);
+        for (const auto& ring : rings) {
+            out << "<polygon fill=\"none\" stroke=\"" << to_hex(outline_grey) << "\" stroke-width=\""
+                << num(1.5 * px_size) << "\" points=\"";
+            for (const auto& p : ring) out << num(p.x) << "," << num(p.y) << " ";
+            out << "\"/>\n";
+        }
+    } else if (options.show_domain) {
         const Box& b = data.domain.bounds();
         out << "<rect x=\"" << num(b.lo.x) << "\" y=\"" << num(b.lo.y) << "\" width=\"" << num(b.hi.x - b.lo.x)
             << "\" height=\"" << num(b.hi.y - b.lo.y) << "\" fill=\"none\" stroke=\"" << to_hex(outline_grey)
