@@ -202,6 +202,39 @@ def striped_dots_2d():
         f.write("\n")
 
 
+def blob_mesh():
+    """A closed triangle mesh (OBJ): a lumpy sphere of radius about 6 centred at (6, 6, 6), used
+    as a 3D output domain (`--domain mesh:examples/blob.obj`)."""
+    rings, segments = 24, 48
+    verts = [(6.0, 6.0, 12.0)]
+    for i in range(1, rings):
+        th = math.pi * i / rings
+        for j in range(segments):
+            ph = 2 * math.pi * j / segments
+            r = 6.0 * (1 + 0.12 * math.sin(3 * ph) * math.sin(th) ** 2 + 0.08 * math.cos(2 * th))
+            verts.append((6 + r * math.sin(th) * math.cos(ph), 6 + r * math.sin(th) * math.sin(ph),
+                          6 + r * math.cos(th)))
+    verts.append((6.0, 6.0, 6.0 - 6.0 * 1.08))
+    faces = []
+    ring = lambda i, j: 1 + (i - 1) * segments + (j % segments)  # 0-based index of ring i (1..rings-1)
+    for j in range(segments):
+        faces.append((0, ring(1, j), ring(1, j + 1)))
+    for i in range(1, rings - 1):
+        for j in range(segments):
+            a, b, c, d = ring(i, j), ring(i, j + 1), ring(i + 1, j), ring(i + 1, j + 1)
+            faces.append((a, c, d))
+            faces.append((a, d, b))
+    last = len(verts) - 1
+    for j in range(segments):
+        faces.append((ring(rings - 1, j), last, ring(rings - 1, j + 1)))
+    with open(os.path.join(HERE, "blob.obj"), "w") as f:
+        f.write("# lumpy closed sphere, written by examples/generate.py\n")
+        for v in verts:
+            f.write("v %.5f %.5f %.5f\n" % v)
+        for a, b, c in faces:
+            f.write("f %d %d %d\n" % (a + 1, b + 1, c + 1))
+
+
 if __name__ == "__main__":
     poisson_disk_2d()
     hex_jittered_2d()
@@ -210,3 +243,4 @@ if __name__ == "__main__":
     spheres_3d()
     rods_3d()
     striped_dots_2d()
+    blob_mesh()

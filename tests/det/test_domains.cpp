@@ -24,3 +24,17 @@ TEST(DetDomains, PolygonWithAHoleHoldsItsElements) {
     for (const auto& e : out.elements) in_hole += norm(e.position - Vec3{15, 15, 0}) < 4.0;
     EXPECT_EQ(in_hole, 0);
 }
+
+TEST(DetDomains, ClosedMeshHoldsItsElements) {
+    const std::string dir = std::string(TESSERA_SOURCE_DIR) + "/examples/";
+    const Exemplar ex = load(dir + "spheres_3d.json");
+    const Domain blob = Domain::mesh(dir + "blob.obj", 64);
+    DetOptions o;
+    o.iterations = 5;
+    const Arrangement out = synthesize_det(ex, blob, o);
+    int outside = 0;
+    for (const auto& s : out.samples) outside += !blob.inside(s.p);
+    EXPECT_LT(static_cast<double>(outside) / out.samples.size(), 0.01);
+    const double expected = ex.elements.size() / ex.domain.measure() * blob.measure();
+    EXPECT_NEAR(out.elements.size() / expected, 1.0, 0.1);
+}
