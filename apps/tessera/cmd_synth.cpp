@@ -305,6 +305,14 @@ void run_synth(SynthArgs& args) {
                       result.elements.size(), result.stats.total_seconds, result.stats.final_energy);
         std::cerr << line << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview)
                   << std::endl;
+        const tessera::RunStats& st = result.stats;
+        if (st.physics) {
+            std::snprintf(line, sizeof line,
+                          "physics: interpenetrating pairs %d -> %d, deepest overlap %.4g -> %.4g, floating %d -> %d",
+                          st.penetrations_before, st.penetrations_after, st.max_depth_before, st.max_depth_after,
+                          st.floating_before, st.floating_after);
+            std::cerr << line << std::endl;
+        }
     }
 }
 
@@ -383,6 +391,13 @@ Subcommand add_synth_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--patch-candidates", args->det.patch_candidates,
                     "Random candidate patches tried per cell at initialization (>= 1).")
+        ->capture_default_str();
+    cmd->add_flag("--physics", args->det.physics,
+                  "Interleaved physics: after every iteration, rigid-body steps (Bullet) resolve "
+                  "interpenetration and let elements settle under gravity; reports interpenetration and "
+                  "floating elements before and after.");
+    cmd->add_option("--physics-substeps", args->det.physics_options.substeps,
+                    "Rigid-body steps per iteration with --physics.")
         ->capture_default_str();
     cmd->add_option("--gravity", args->gravity,
                     "Direction of gravity, an axis with its sign (-x, +x, -y, +y, -z, +z). Default: -y in 2D, "

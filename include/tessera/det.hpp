@@ -12,6 +12,7 @@
 #include "tessera/domain.hpp"
 #include "tessera/exemplar.hpp"
 #include "tessera/field.hpp"
+#include "tessera/physics.hpp"
 #include "tessera/progress.hpp"
 
 namespace tessera {
@@ -60,6 +61,11 @@ struct DetOptions {
     // of types marked floor, are floor elements; output floor elements copy only
     // input floor elements and keep their elevation. 0 = only types marked floor.
     double floor_distance = 0.0;
+    // Interleaved physics (section 5): after every search/assign iteration, a few
+    // rigid-body steps (Bullet) resolve interpenetration and let elements settle.
+    // physics_options.gravity zero = 9.81 m/s^2 along `gravity` (or its default).
+    bool physics = false;
+    PhysicsOptions physics_options;
 };
 
 // Synthesizes an arrangement of elements like `exemplar` filling `domain`.

@@ -78,6 +78,12 @@ struct RunStats {
     double final_energy = 0.0;           // energy of the returned arrangement
     double radius = 0.0;                 // neighbourhood radius used
     int solver_bound_hits = 0;           // iterations whose linear solve hit its iteration bound
+    // Interleaved physics (when used): interpenetrating element pairs, deepest overlap
+    // and floating elements before the first physics step and in the result.
+    bool physics = false;
+    int penetrations_before = 0, penetrations_after = 0;
+    double max_depth_before = 0.0, max_depth_after = 0.0;
+    int floating_before = 0, floating_after = 0;
     std::vector<double> iteration_seconds;
     double init_seconds = 0.0;
     double total_seconds = 0.0;

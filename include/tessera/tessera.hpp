@@ -9,6 +9,7 @@
 #include "tessera/field.hpp"
 #include "tessera/io.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/physics.hpp"
 #include "tessera/progress.hpp"
 #include "tessera/render.hpp"
 #include "tessera/vec.hpp"

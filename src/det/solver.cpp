@@ -10,6 +10,7 @@
 #include "det/search.hpp"
 #include "tessera/det.hpp"
 #include "tessera/error.hpp"
+#include "tessera/physics.hpp"
 
 namespace tessera {
 
@@ -54,6 +55,9 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     stats.init_seconds = seconds_since(t0);
 
     const det::SearchSettings search{options.search, threads};
+    PhysicsOptions physics = options.physics_options;
+    if (options.physics && physics.gravity == Vec3{})
+        physics.gravity = params.gravity.vector() * (9.81 * physics.units_per_metre);
     for (int it = 0; it < options.iterations; ++it) {
         const auto ti = Clock::now();
         const double energy = det::search_step(state, index, domain, params, search);
@@ -61,10 +65,27 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         stats.energy.push_back(energy);
         stats.iteration_seconds.push_back(seconds_since(ti));
         if (!assigned.cg_converged) ++stats.solver_bound_hits;
+        if (options.physics) {  // the interleaved solver: extra steps after search and assign
+            if (it == 0) {
+                const PhysicsReport before =
+                    measure_physics(state.arrangement, domain, physics.gravity, physics.tolerance);
+                stats.penetrations_before = before.interpenetrating_pairs;
+                stats.max_depth_before = before.max_depth;
+                stats.floating_before = before.floating;
+            }
+            step_physics(state.arrangement, domain, physics);
+        }
         report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
     }
     det::keep_inside_domain(state.arrangement, domain, params.dimension);
     det::update_poses(state, index, params.dimension);
+    if (options.physics) {
+        const PhysicsReport after = measure_physics(state.arrangement, domain, physics.gravity, physics.tolerance);
+        stats.physics = true;
+        stats.penetrations_after = after.interpenetrating_pairs;
+        stats.max_depth_after = after.max_depth;
+        stats.floating_after = after.floating;
+    }
     // Energy of the result itself (a search without assignment).
     stats.final_energy = det::search_step(state, index, domain, params, search);
     stats.radius = params.radius;

@@ -447,6 +447,10 @@ OrderedJson stats_json(const RunStats& stats) {
     out["radius"] = stats.radius;
     out["solver_bound_hits"] = stats.solver_bound_hits;
     out["seed"] = stats.seed;
+    if (stats.physics)
+        out["physics"] = {{"interpenetrating_pairs", {stats.penetrations_before, stats.penetrations_after}},
+                          {"max_depth", {stats.max_depth_before, stats.max_depth_after}},
+                          {"floating", {stats.floating_before, stats.floating_after}}};
     // Timings and the thread count are left out on purpose: the file must be
     // byte-identical for the same input, options and seed on any machine and with
     // any number of threads. They stay in RunStats and the CLI prints them.
