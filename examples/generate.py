@@ -202,6 +202,21 @@ def striped_dots_2d():
         f.write("\n")
 
 
+def plum_stack_2d():
+    """A 2D stack of plums (disks of radius 0.5) in hexagonal rows resting on a floor at y = 0,
+    with small jitter: the floor row must stay on the floor (`--floor-distance 0.6`)."""
+    rng = random.Random(18)
+    els = []
+    for row in range(5):
+        for i in range(12):
+            x = 0.5 + i + 0.5 * (row % 2) + rng.gauss(0, 0.03)
+            y = 0.5 + row * 0.866 + (0.0 if row == 0 else rng.gauss(0, 0.03))
+            if x <= 11.8:
+                els.append({"type": "plum", "position": [r4(x), r4(y)], "radius": 0.5})
+    write("plum_stack_2d", 2, [12, 4.5], [{"name": "plum"}], els,
+          "Plums stacked in hexagonal rows on a floor (y = 0); the bottom row rests on it.")
+
+
 def blob_mesh():
     """A closed triangle mesh (OBJ): a lumpy sphere of radius about 6 centred at (6, 6, 6), used
     as a 3D output domain (`--domain mesh:examples/blob.obj`)."""
@@ -244,3 +259,4 @@ if __name__ == "__main__":
     rods_3d()
     striped_dots_2d()
     blob_mesh()
+    plum_stack_2d()
