@@ -20,7 +20,7 @@ namespace tessera {
 
 class OrientationField {
 public:
-    enum class Kind { none, constant, radial, vortex };
+    enum class Kind { none, constant, radial, vortex, polyline };
 
     // No field: the global frame everywhere (the default).
     OrientationField() = default;
@@ -30,7 +30,15 @@ public:
     static OrientationField radial(const Vec3& center, const Vec3& axis = {0, 0, 1});
     // Directions circling `center` counter-clockwise about `axis` (2D: about +z).
     static OrientationField vortex(const Vec3& center, const Vec3& axis = {0, 0, 1});
-    // Parses "constant:dx,dy[,dz]", "radial:cx,cy[,cz]", "vortex:cx,cy[,cz]" (CLI --field).
+    // The tangent of the nearest segment of a polyline (at least 2 points): a flow
+    // along a curve. Throws Error(option) for fewer than 2 points, zero-length
+    // segments or non-finite points.
+    static OrientationField polyline(const std::vector<Vec3>& points);
+    // The trefoil knot (the paper's Figure 10j) as a closed polyline of `samples`
+    // points: (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t) * scale + center.
+    static OrientationField trefoil(const Vec3& center, double scale, int samples = 360);
+    // Parses "constant:dx,dy[,dz]", "radial:cx,cy[,cz]", "vortex:cx,cy[,cz]",
+    // "polyline:x1,y1[,z1],x2,y2[,z2],..." or (3D) "trefoil:cx,cy,cz,scale" (CLI --field).
     // `parameter` names the option in errors.
     static OrientationField parse(const std::string& text, int dimension, const std::string& parameter);
 
@@ -46,6 +54,7 @@ private:
     Kind kind_ = Kind::none;
     Vec3 vector_;  // constant: the direction; radial/vortex: the centre
     Vec3 axis_{0, 0, 1};
+    std::vector<Vec3> points_;  // polyline
 };
 
 // Rotation taking +x onto the unit vector d (2D: about z; 3D: least twist, +z kept up).

@@ -2,6 +2,7 @@
 #include "tessera/field.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -43,6 +44,31 @@ OrientationField OrientationField::vortex(const Vec3& center, const Vec3& axis) 
     return f;
 }
 
+OrientationField OrientationField::polyline(const std::vector<Vec3>& points) {
+    if (points.size() < 2) throw Error(ErrorKind::option, "a polyline field needs at least 2 points");
+    for (size_t k = 0; k < points.size(); ++k) {
+        if (!is_finite(points[k])) throw Error(ErrorKind::option, "a polyline field's points must be finite");
+        if (k > 0 && !(norm(points[k] - points[k - 1]) > degenerate))
+            throw Error(ErrorKind::option, "a polyline field has a zero-length segment at point " + std::to_string(k));
+    }
+    OrientationField f;
+    f.kind_ = Kind::polyline;
+    f.points_ = points;
+    return f;
+}
+
+OrientationField OrientationField::trefoil(const Vec3& center, double scale, int samples) {
+    if (!(scale > 0.0) || !std::isfinite(scale)) throw Error(ErrorKind::option, "the trefoil's scale must be > 0");
+    std::vector<Vec3> points;
+    for (int k = 0; k <= std::max(samples, 12); ++k) {
+        const double t = 2.0 * M_PI * k / std::max(samples, 12);
+        points.push_back(center + Vec3{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t),
+                                       -std::sin(3 * t)} *
+                                      scale);
+    }
+    return polyline(points);
+}
+
 OrientationField OrientationField::parse(const std::string& text, int dimension, const std::string& parameter) {
     const size_t colon = text.find(':');
     const std::string kind = text.substr(0, colon);
@@ -58,6 +84,23 @@ OrientationField OrientationField::parse(const std::string& text, int dimension,
             v.push_back(x);
         }
     }
+    try {
+        if (kind == "polyline") {
+            if (v.size() < 2u * dimension || v.size() % dimension != 0)
+                throw Error(ErrorKind::option, "a polyline needs at least 2 points of " + std::to_string(dimension) +
+                                                   " numbers each");
+            std::vector<Vec3> points;
+            for (size_t k = 0; k < v.size(); k += dimension)
+                points.push_back({v[k], v[k + 1], dimension == 3 ? v[k + 2] : 0.0});
+            return polyline(points);
+        }
+        if (kind == "trefoil") {
+            if (dimension != 3 || v.size() != 4) throw Error(ErrorKind::option, "expected trefoil:cx,cy,cz,scale (3D)");
+            return trefoil({v[0], v[1], v[2]}, v[3]);
+        }
+    } catch (const Error& e) {
+        throw Error(ErrorKind::option, parameter + ": " + e.what());
+    }
     if (v.size() != static_cast<size_t>(dimension))
         throw Error(ErrorKind::option, parameter + ": expected constant|radial|vortex:" +
                                            (dimension == 2 ? "x,y" : "x,y,z") + ", got '" + text + "'");
@@ -69,7 +112,8 @@ OrientationField OrientationField::parse(const std::string& text, int dimension,
     } catch (const Error& e) {
         throw Error(ErrorKind::option, parameter + ": " + e.what());
     }
-    throw Error(ErrorKind::option, parameter + ": unknown field '" + kind + "' (constant, radial or vortex)");
+    throw Error(ErrorKind::option,
+                parameter + ": unknown field '" + kind + "' (constant, radial, vortex, polyline or trefoil)");
 }
 
 Vec3 OrientationField::direction(const Vec3& p) const {
@@ -84,6 +128,19 @@ Vec3 OrientationField::direction(const Vec3& p) const {
             if (!(n > degenerate)) return {};
             r = r / n;
             return kind_ == Kind::radial ? r : cross(axis_, r);
+        }
+        case Kind::polyline: {
+            // Tangent of the nearest segment (a linear scan: fields are evaluated once per
+            // sample per iteration and curves typed by users are short).
+            double best = INFINITY;
+            Vec3 tangent{1, 0, 0};
+            for (size_t k = 0; k + 1 < points_.size(); ++k) {
+                const Vec3 a = points_[k], ab = points_[k + 1] - a;
+                const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
+                const double d = squared_norm(a + ab * t - p);
+                if (d < best) best = d, tangent = ab / norm(ab);
+            }
+            return tangent;
         }
     }
     return {1, 0, 0};
@@ -118,6 +175,7 @@ std::string OrientationField::describe() const {
         case Kind::constant: s << "constant (" << vector_.x << "," << vector_.y << "," << vector_.z << ")"; break;
         case Kind::radial: s << "radial about (" << vector_.x << "," << vector_.y << "," << vector_.z << ")"; break;
         case Kind::vortex: s << "vortex about (" << vector_.x << "," << vector_.y << "," << vector_.z << ")"; break;
+        case Kind::polyline: s << "polyline of " << points_.size() << " points"; break;
     }
     return s.str();
 }

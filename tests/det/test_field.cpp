@@ -96,3 +96,19 @@ TEST(OrientationFieldTest, FramesAndParsing) {
         EXPECT_NE(std::string(e.what()).find("--field"), std::string::npos);
     }
 }
+
+TEST(OrientationFieldTest, PolylineAndTrefoilFollowTheirCurve) {
+    const OrientationField f = OrientationField::parse("polyline:0,0,10,0,10,10", 2, "--field");
+    EXPECT_NEAR(norm(f.direction({3, 1, 0}) - Vec3{1, 0, 0}), 0.0, 1e-12);
+    EXPECT_NEAR(norm(f.direction({11, 7, 0}) - Vec3{0, 1, 0}), 0.0, 1e-12);
+    EXPECT_THROW(OrientationField::parse("polyline:0,0,0,0", 2, "--field"), Error);
+    EXPECT_THROW(OrientationField::parse("polyline:0,0,1", 2, "--field"), Error);
+    // On the trefoil, the direction is the curve's tangent (derivative of the parametrisation).
+    const OrientationField knot = OrientationField::trefoil({0, 0, 0}, 1.0, 3600);
+    const double t = 0.7;
+    const Vec3 p{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)};
+    Vec3 d{std::cos(t) + 4 * std::cos(2 * t), -std::sin(t) + 4 * std::sin(2 * t), -3 * std::cos(3 * t)};
+    d = d / norm(d);
+    EXPECT_GT(std::abs(dot(knot.direction(p), d)), 0.999);
+    EXPECT_THROW(OrientationField::parse("trefoil:0,0,0", 3, "--field"), Error);
+}
