@@ -31,7 +31,10 @@ struct ElementType {
     std::string name;     // class name, e.g. "tree", "stick"; unique within an exemplar
     bool rigid = true;    // rigid elements keep the exact shape of an input element
     bool floor = false;   // floor elements (used by constrained selection, later)
-    std::string mesh;     // optional mesh file (OBJ) for rebuilding geometry, later
+    std::string mesh;     // optional mesh file (OBJ / ASCII PLY) for rebuilding geometry (geometry.hpp)
+    // Optional reference sample layout in the mesh's local frame (geometry.hpp); empty =
+    // derived from the first element of the type. Required for deformable types with a mesh.
+    std::vector<Vec3> reference;
 };
 
 struct Element {

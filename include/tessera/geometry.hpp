@@ -1,0 +1,92 @@
+// tessera/geometry.hpp — elements with geometry (Discrete Element Textures, sections
+// 5 and 6): after synthesis every output element is rebuilt as a triangle mesh from
+// its samples, and the whole arrangement is written as one scene (OBJ, PLY, glTF).
+//
+// Conventions (docs/format.md, "Element geometry"):
+// - An element type may name a mesh file (ElementType::mesh, OBJ or ASCII PLY). The
+//   mesh is authored in the element's local frame: the frame whose origin is the
+//   centroid of the element's samples and whose axes are those of orientation = identity.
+//   A local point v lands at  position + scale * orientation.rotate(v).
+// - The type's reference sample layout (ElementType::reference) is where the samples sit
+//   in that local frame. When a type gives none, it is taken from the first element of
+//   the type in the data (its samples brought back by the inverse of its pose).
+// - Rigid types: the pose of an output element is the best-fit rotation and translation
+//   (Kabsch) of the reference layout onto its samples; the mesh is instanced with it.
+// - Deformable types (rigid = false, spaghetti, bags): every mesh vertex follows the
+//   samples by a smooth deformation: each sample gets the best-fit rotation of its
+//   neighbouring samples (reference -> output), and a vertex moves with the Gaussian-
+//   weighted blend of the samples' rigid motions (linear blend skinning with weights by
+//   distance to the reference samples). The result is a mesh of its own per element.
+// - Types without a mesh get a default shape: an icosphere of the element radius for
+//   single-sample elements, a tube through the samples for multi-sample elements (the
+//   radius, or a width derived from the spacing when the radius is 0).
+// 2D data are placed in the plane z = 0; their meshes are 3D (rotated about z).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tessera/exemplar.hpp"
+#include "tessera/mesh.hpp"
+#include "tessera/vec.hpp"
+
+namespace tessera {
+
+struct GeometryOptions {
+    // Directory that relative ElementType::mesh paths are resolved against; "" = as given
+    // (relative to the working directory). load() already resolves paths read from a file.
+    std::string base_directory;
+    // Default shapes: subdivisions of the icosphere (0..5) and sides of tubes (3..64).
+    int sphere_subdivisions = 2;
+    int tube_sides = 10;
+    // Width of a sample's influence on the vertices of a deformable mesh, times the mean
+    // distance between consecutive reference samples; > 0.
+    double deform_falloff = 1.0;
+};
+
+struct SceneInstance {
+    int element = -1;   // index into the data's elements
+    int type = 0;       // index into Scene::type_names
+    int mesh = 0;       // index into Scene::meshes
+    // true: the mesh is the type's shared mesh, placed by the pose below;
+    // false: the mesh is this element's own, already in world coordinates (deformed
+    // meshes and default shapes), and the pose is informational.
+    bool instanced = false;
+    Vec3 position;
+    Quat orientation;
+    double scale = 1.0;
+    double fit_error = 0.0;  // rigid: RMS distance between posed reference samples and the samples
+};
+
+struct Scene {
+    int dimension = 3;
+    std::vector<std::string> type_names;
+    std::vector<TriangleMesh> meshes;
+    std::vector<SceneInstance> instances;  // one per element, in element order
+
+    // The world-space mesh of instance i (its pose applied when instanced).
+    TriangleMesh world_mesh(int instance) const;
+    // All instances in world space as one mesh; when `triangle_instance` is given it
+    // receives the instance index of every triangle.
+    TriangleMesh merged(std::vector<int>* triangle_instance = nullptr) const;
+};
+
+// Builds the scene of `data` (every element, in order). Throws Error(io) for a mesh
+// file that cannot be read, Error(input) naming the type for a mesh with no triangles,
+// a deformable type whose reference layout cannot be found, or a reference layout
+// whose sample count differs from the type's elements; Error(option) for bad options.
+Scene build_scene(const Exemplar& data, const GeometryOptions& options = {});
+
+// True when `path` names a scene format: .obj, .gltf, .glb, or .mesh.ply (a plain
+// .ply is the point-instancing output of save()).
+bool is_scene_path(const std::string& path);
+
+// Writes the scene by extension, atomically:
+//   .obj       one object (o) per element, grouped by type (g), shared vertices per element;
+//   .mesh.ply  ASCII PLY with per-face `element` and `class` properties;
+//   .gltf/.glb glTF 2.0: one mesh per element type instanced by one node per element
+//              (rigid: TRS from the pose), deformed meshes as meshes of their own.
+// Throws Error(option) for another extension, Error(io) when it cannot write.
+void write_scene(const Scene& scene, const std::string& path);
+
+}  // namespace tessera
