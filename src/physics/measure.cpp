@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/hulls.hpp"
 #include "physics/shapes.hpp"
 #include "tessera/error.hpp"
 #include "tessera/physics.hpp"
@@ -69,14 +70,27 @@ PhysicsReport measure_physics(const Exemplar& data, const Domain& domain, const 
     const int n = static_cast<int>(data.elements.size());
     report.elements = n;
     if (n == 0) return report;
-    const std::vector<ElementShape> shapes = physics::element_shapes(data);
+    std::vector<ElementShape> shapes = physics::element_shapes(data);
     const Vec3 g = physics::gravity_direction(gravity, data.dimension);
+    // Types with meshes are measured as the convex hulls the simulation uses (hulls.hpp).
+    const physics::TypeHulls hulls(data);
+    std::vector<std::vector<Vec3>> hull(n);
+    if (hulls.any)
+        for (int i = 0; i < n; ++i)
+            if (hulls.has(data.elements[i])) {
+                hull[i] = physics::world_hull(hulls, data.elements[i], shapes[i].centroid);
+                physics::cover_hull(shapes[i], hull[i]);
+            }
 
     std::vector<char> supported(n, 0);
     for (int i = 0; i < n; ++i) {
         const ElementShape& s = shapes[i];
         if (!is_finite(s.centroid) || !domain.inside(s.centroid)) ++report.lost;
-        supported[i] = !domain.inside(lowest_point(data, s, g) + g * (tolerance * s.radius));
+        Vec3 lowest = lowest_point(data, s, g);
+        if (!hull[i].empty())
+            lowest = *std::max_element(hull[i].begin(), hull[i].end(),
+                                       [&](const Vec3& a, const Vec3& b) { return dot(a, g) < dot(b, g); });
+        supported[i] = !domain.inside(lowest + g * (tolerance * s.radius));
     }
 
     // Sort-and-sweep along the domain's longest axis.
@@ -99,7 +113,15 @@ PhysicsReport measure_physics(const Exemplar& data, const Domain& domain, const 
             const ElementShape& sb = shapes[b];
             if (sb.lo[axis] > sa.hi[axis] + slack) break;
             if (!boxes_overlap(sa, sb, slack)) continue;
-            const PairContact c = contact(data, sa, sb);
+            PairContact c;
+            if (hull[a].empty() && hull[b].empty()) {
+                c = contact(data, sa, sb);
+            } else {
+                const physics::HullContact h = physics::hull_contact(
+                    hull[a], &data.samples[sa.first], sa.count, sa.radius, hull[b], &data.samples[sb.first],
+                    sb.count, sb.radius);
+                c = {h.gap, h.on_a, h.on_b};
+            }
             const double depth = -c.gap;
             if (depth > 0) report.max_depth = std::max(report.max_depth, depth);
             if (depth > tolerance * std::min(sa.radius, sb.radius)) ++report.interpenetrating_pairs;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/hulls.hpp"
 #include "physics/shapes.hpp"
 #include "tessera/error.hpp"
 #include "tessera/mesh.hpp"
@@ -126,8 +127,34 @@ bool add_mesh_wall(World& w, const Domain& domain, const Frame& f, const Physics
     return true;
 }
 
+// Element types with a mesh collide as the convex hull of their mesh (hulls.hpp), the
+// paper's choice for general elements; others as spheres or capsule chains.
+btCollisionShape* make_hull(World& w, const std::vector<Vec3>& points, const Element& e, const Frame& f) {
+    // Bullet rounds a hull by its collision margin, outward: the points are pulled in by
+    // the margin (toward the centre) so that the rounded shape is the mesh's size and
+    // bodies come to rest touching, as the measure sees them.
+    constexpr double margin = 0.02;  // Bullet units (mean collision radius 0.5)
+    auto* hull = new btConvexHullShape();
+    w.keep(hull);
+    for (const Vec3& v : points) {
+        Vec3 p = e.orientation.rotate(v) * (e.scale * f.scale);
+        const double len = norm(p);
+        if (len > 2 * margin) p = p * ((len - margin) / len);
+        hull->addPoint(btVector3(btScalar(p.x), btScalar(p.y), btScalar(p.z)), false);
+    }
+    hull->setMargin(btScalar(margin));
+    hull->recalcLocalAabb();
+    return hull;
+}
+
 // The collision shape of one element, centred on its centroid, and its volume.
-btCollisionShape* make_shape(World& w, const Exemplar& data, const ElementShape& s, const Frame& f, double& volume) {
+btCollisionShape* make_shape(World& w, const Exemplar& data, const ElementShape& s, const Frame& f,
+                             const physics::TypeHulls& hulls, int element, double& volume) {
+    const Element& e = data.elements[element];
+    if (!hulls.points[e.type].empty()) {
+        volume = hulls.volume[e.type] * std::pow(e.scale * f.scale, 3);
+        return make_hull(w, hulls.points[e.type], e, f);
+    }
     const double r = s.radius * f.scale;
     if (s.count == 1) {
         volume = 4.0 / 3.0 * kPi * r * r * r;
@@ -160,11 +187,12 @@ btCollisionShape* make_shape(World& w, const Exemplar& data, const ElementShape&
 void add_bodies(World& w, const Exemplar& data, const std::vector<ElementShape>& shapes, const Frame& f,
                 const PhysicsOptions& o) {
     const bool plane = data.dimension == 2;
+    const physics::TypeHulls hulls(data);
     w.bodies.reserve(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const ElementShape& s = shapes[i];
         double volume = 0;
-        btCollisionShape* shape = make_shape(w, data, s, f, volume);
+        btCollisionShape* shape = make_shape(w, data, s, f, hulls, static_cast<int>(i), volume);
         const bool fixed = data.elements[i].locked;
         const btScalar mass = fixed ? btScalar(0) : btScalar(std::max(volume, 1e-12));  // density 1
         btVector3 inertia(0, 0, 0);
