@@ -53,12 +53,19 @@ std::pair<long, long> edge_defects(const TriangleMesh& mesh) {
     return {boundary, non_manifold};
 }
 
-std::string repair_notes(const std::string& name, long boundary, long non_manifold, int64_t exact_cells) {
-    if (boundary == 0 && non_manifold == 0) return "";
+std::string repair_notes(const std::string& name, long boundary, long non_manifold, int64_t exact_cells,
+                         int64_t overlap_cells) {
     std::ostringstream s;
-    s << "mesh " << base_name(name) << " has " << boundary << " boundary edges";
-    if (non_manifold) s << " and " << non_manifold << " non-manifold edges";
-    s << "; inside decided by generalized winding number (" << exact_cells << " cells evaluated exactly)";
+    if (boundary > 0 || non_manifold > 0) {
+        s << "mesh " << base_name(name) << " has " << boundary << " boundary edges";
+        if (non_manifold) s << " and " << non_manifold << " non-manifold edges";
+        s << "; inside decided by generalized winding number (" << exact_cells << " cells evaluated exactly)";
+    }
+    if (overlap_cells > 0) {
+        if (s.tellp() > 0) s << "; ";
+        s << "mesh " << base_name(name) << " overlaps itself (winding number 2 or more in " << overlap_cells
+          << " voxels: self-intersecting or nested parts); the domain is their union";
+    }
     return s.str();
 }
 
@@ -91,7 +98,13 @@ std::shared_ptr<MeshShape> voxelize(const TriangleMesh& mesh, int resolution, co
     shape->threshold = 0.5;
     shape->values.resize(w.size());
     // |w| so that a mesh with inward-facing triangles still encloses its volume.
-    for (size_t v = 0; v < w.size(); ++v) shape->values[v] = std::abs(w[v]) >= 0.5f ? 1.0f : 0.0f;
+    // |w| >= 1.5 marks volume enclosed twice: a self-intersecting mesh or overlapping parts.
+    // Taking the union is the natural repair; it is reported in the notes.
+    int64_t overlap_cells = 0;
+    for (size_t v = 0; v < w.size(); ++v) {
+        shape->values[v] = std::abs(w[v]) >= 0.5f ? 1.0f : 0.0f;
+        overlap_cells += std::abs(w[v]) >= 1.5f;
+    }
     const auto [boundary, non_manifold] = edge_defects(mesh);
     if (boundary > 0 || non_manifold > 0) {
         // Where all three ray counts agree the exact winding number was not evaluated;
@@ -124,7 +137,7 @@ std::shared_ptr<MeshShape> voxelize(const TriangleMesh& mesh, int resolution, co
                                            " encloses no volume (generalized winding number below 1/2 everywhere); "
                                            "it must be a closed or nearly closed surface");
     }
-    shape->notes = repair_notes(name, boundary, non_manifold, exact_cells);
+    shape->notes = repair_notes(name, boundary, non_manifold, exact_cells, overlap_cells);
     shape->source.file = name;
     shape->source.resolution = resolution;
     shape->source.thickness = thickness;

@@ -118,6 +118,24 @@ TEST(DomainMesh, ACrackStillGivesTheRightInside) {
     }
 }
 
+TEST(DomainMesh, ASelfOverlappingMeshIsTheUnionAndSaysSo) {
+    // Two unit-radius spheres whose volumes overlap (centres 1 apart), as one mesh: a
+    // self-intersecting surface. The domain is their union, and the notes report it.
+    TriangleMesh m = icosphere(3);
+    const TriangleMesh other = icosphere(3);
+    const int base = static_cast<int>(m.vertices.size());
+    for (const Vec3& v : other.vertices) m.vertices.push_back(v + Vec3{1, 0, 0});
+    for (const auto& t : other.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    const Domain d = Domain::mesh(m, 64, "twins.obj");
+    const double sphere = mesh_volume(icosphere(3));
+    const double lens = 5.0 / 12.0 * 3.14159265358979 * 1.0;  // overlap of two unit balls 1 apart
+    EXPECT_NEAR(d.measure(), 2 * sphere - lens, 0.04 * 2 * sphere);
+    EXPECT_TRUE(d.inside({0.5, 0, 0}));  // in both
+    EXPECT_TRUE(d.inside({1.8, 0, 0}));  // in the second only
+    EXPECT_NE(d.notes().find("overlaps itself"), std::string::npos) << d.notes();
+    EXPECT_NE(d.notes().find("union"), std::string::npos);
+}
+
 TEST(DomainMesh, AnOpenSheetEnclosesNoVolume) {
     TriangleMesh sheet;
     sheet.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.2}, {0, 1, 0.2}};  // planar, tilted
