@@ -121,12 +121,24 @@ void MeshRaster::fill(const RasterVertex& a, const RasterVertex& b, const Raster
     const float dn1[3] = {v[1]->nx - v0.nx, v[1]->ny - v0.ny, v[1]->nz - v0.nz};
     const float dn2[3] = {v[2]->nx - v0.nx, v[2]->ny - v0.ny, v[2]->nz - v0.nz};
 
-    for (int j = j0; j <= j1; ++j) {
-        i64 w0 = row[0], w1 = row[1], w2 = row[2];
-        size_t i = static_cast<size_t>(j) * width_ + i0;
-        for (int px_i = i0; px_i <= i1; ++px_i, ++i, w0 += step_x[0], w1 += step_x[1], w2 += step_x[2]) {
-            if (w0 < bias[0] || w1 < bias[1] || w2 < bias[2]) continue;
-            ++fragments_;
+    for (int j = j0; j <= j1; ++j, row[0] += step_y[0], row[1] += step_y[1], row[2] += step_y[2]) {
+        // The row's span, solved per edge from w + t * step_x >= bias (t = column - i0),
+        // so long thin triangles do not pay for their whole bounding box.
+        i64 t0 = 0, t1 = i1 - i0;
+        for (int k = 0; k < 3 && t0 <= t1; ++k) {
+            const i64 need = bias[k] - row[k];  // w must grow by this much
+            if (step_x[k] > 0)
+                t0 = std::max(t0, ceil_div(need, step_x[k]));
+            else if (step_x[k] < 0)
+                t1 = std::min(t1, floor_div(-need, -step_x[k]));
+            else if (need > 0)
+                t1 = -1;
+        }
+        if (t0 > t1) continue;
+        i64 w1 = row[1] + t0 * step_x[1], w2 = row[2] + t0 * step_x[2];
+        size_t i = static_cast<size_t>(j) * width_ + i0 + t0;
+        fragments_ += static_cast<size_t>(t1 - t0 + 1);
+        for (i64 t = t0; t <= t1; ++t, ++i, w1 += step_x[1], w2 += step_x[2]) {
             const double l1 = static_cast<double>(w1) * inv_area, l2 = static_cast<double>(w2) * inv_area;
             const float z = static_cast<float>(d0 + l1 * dd1 + l2 * dd2);
             if (!(z > depth_[i])) continue;
@@ -136,7 +148,6 @@ void MeshRaster::fill(const RasterVertex& a, const RasterVertex& b, const Raster
             for (int k = 0; k < 3; ++k) n[k] = n0[k] + f1 * dn1[k] + f2 * dn2[k];
             tag_[i] = tag;
         }
-        for (int k = 0; k < 3; ++k) row[k] += step_y[k];
     }
 }
 
