@@ -28,6 +28,8 @@ class MeshRaster {
 public:
     MeshRaster(int width, int height);
 
+    static constexpr int bytes_per_pixel = 4 * sizeof(float) + sizeof(int);  // depth, normal, tag
+
     int width() const { return width_; }
     int height() const { return height_; }
 

@@ -57,7 +57,7 @@ std::string render_png_3d(const Exemplar& data, const RenderOptions& options) {
     const View3D view = View3D::standard();
     const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples);
     const Frame3D frame = make_frame_3d(data, spheres, view, options);
-    const int ss = supersampling(frame.width, frame.height);
+    const int ss = supersampling(frame.width, frame.height, sizeof(Rgb) + sizeof(float));
     HiResBuffer buf(frame.width * ss, frame.height * ss);
     for (const auto& s : spheres) draw_sphere(buf, view, frame, ss, s);
     if (options.show_domain)

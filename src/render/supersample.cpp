@@ -6,8 +6,8 @@
 
 namespace tessera::render {
 
-int supersampling(int width, int height) {
-    return static_cast<double>(width) * height <= 16.0 * 1024 * 1024 ? 2 : 1;
+int supersampling(int width, int height, int bytes_per_sample) {
+    return 4.0 * width * height * bytes_per_sample <= 1024.0 * 1024 * 1024 ? 2 : 1;
 }
 
 void draw_hidden_edge(std::vector<Rgb>& color, const std::vector<float>& depth, int width, const View3D& view,

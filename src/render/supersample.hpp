@@ -12,9 +12,10 @@
 
 namespace tessera::render {
 
-// Samples per pixel side for a width x height picture: 2, or 1 when the picture is
-// already large (bounded memory).
-int supersampling(int width, int height);
+// Samples per pixel side for a width x height picture: 2, or 1 when 2x2 samples of
+// `bytes_per_sample` each would take more than 1 GiB (bounded memory for very large
+// pictures, which need no anti-aliasing to speak of).
+int supersampling(int width, int height, int bytes_per_sample);
 
 // A thin grey edge a-b of the domain box drawn into `color` (the samples, `width`
 // per row, `ss` per pixel side), with coverage anti-aliasing, hidden where `depth`
