@@ -22,8 +22,12 @@ constexpr i64 half = sub / 2;  // a pixel centre, in sub-pixel units
 // = 2^25 sub-pixel units, so products stay below 2^52). Large, so clipping stays rare.
 constexpr double guard = 65536.0;  // pixels
 
-i64 floor_div(i64 a, i64 b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-i64 ceil_div(i64 a, i64 b) { return -floor_div(-a, b); }
+i64 floor_div(i64 a, i64 b) {
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+i64 ceil_div(i64 a, i64 b) {
+    return -floor_div(-a, b);
+}
 
 bool finite(const RasterVertex& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.depth) && std::isfinite(v.nx) &&
@@ -32,8 +36,8 @@ bool finite(const RasterVertex& v) {
 
 RasterVertex lerp(const RasterVertex& a, const RasterVertex& b, double t) {
     const float s = static_cast<float>(t);
-    return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.depth + (b.depth - a.depth) * s,
-            a.nx + (b.nx - a.nx) * s,  a.ny + (b.ny - a.ny) * s, a.nz + (b.nz - a.nz) * s};
+    return {a.x + (b.x - a.x) * t,    a.y + (b.y - a.y) * t,    a.depth + (b.depth - a.depth) * s,
+            a.nx + (b.nx - a.nx) * s, a.ny + (b.ny - a.ny) * s, a.nz + (b.nz - a.nz) * s};
 }
 
 // A triangle clipped by four half-planes has at most 7 corners.
@@ -56,12 +60,15 @@ int clip(const Polygon& in, int n, Polygon& out, bool along_x, double limit, dou
 // Top-left rule for an edge with direction (dx, dy) of a triangle whose interior is
 // where the edge functions are positive (y down): a top edge is horizontal with the
 // interior below, a left edge runs upward. Centres exactly on these edges are inside.
-bool top_left(i64 dx, i64 dy) { return (dy == 0 && dx > 0) || dy < 0; }
+bool top_left(i64 dx, i64 dy) {
+    return (dy == 0 && dx > 0) || dy < 0;
+}
 
 }  // namespace
 
 MeshRaster::MeshRaster(int width, int height)
-    : width_(width), height_(height),
+    : width_(width),
+      height_(height),
       depth_(static_cast<size_t>(width) * height, -std::numeric_limits<float>::infinity()),
       normal_(static_cast<size_t>(width) * height * 3, 0.0f),
       tag_(static_cast<size_t>(width) * height, -1) {}
@@ -69,7 +76,9 @@ MeshRaster::MeshRaster(int width, int height)
 void MeshRaster::draw_triangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, int tag) {
     if (!finite(a) || !finite(b) || !finite(c)) return;
     const double lo_x = -guard, hi_x = width_ + guard, lo_y = -guard, hi_y = height_ + guard;
-    auto inside = [&](const RasterVertex& v) { return v.x >= lo_x && v.x <= hi_x && v.y >= lo_y && v.y <= hi_y; };
+    auto inside = [&](const RasterVertex& v) {
+        return v.x >= lo_x && v.x <= hi_x && v.y >= lo_y && v.y <= hi_y;
+    };
     if (inside(a) && inside(b) && inside(c)) return fill(a, b, c, tag);
     // Rare: a corner far outside the picture. Clip to the guard band, then fan.
     Polygon p{a, b, c}, q;

@@ -48,10 +48,8 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
     std::vector<Sphere> extent;
     const Box bounds = scene_bounds(scene);
     if (bounds.lo.x <= bounds.hi.x)
-        for (int i = 0; i < 8; ++i)
-            extent.push_back({{(i & 1) ? bounds.hi.x : bounds.lo.x, (i & 2) ? bounds.hi.y : bounds.lo.y,
-                               (i & 4) ? bounds.hi.z : bounds.lo.z},
-                              0.0, 0, false});
+        for (const auto& [a, b] : box_edges(bounds))
+            for (const Vec3& corner : {a, b}) extent.push_back({corner, 0.0, 0, false});
     const Frame3D frame = make_frame_3d(data, extent, view, options);
     const int ss = supersampling(frame.width, frame.height, MeshRaster::bytes_per_pixel + sizeof(Rgb));
     const int width = frame.width * ss;
@@ -95,15 +93,17 @@ std::string render_scene_2d(const Exemplar& data, const Scene& scene, const Rend
                     const size_t k = static_cast<size_t>(y * ss + j) * width + (x * ss + i);
                     const int tag = raster.tag(k);
                     if (tag < 0) continue;
-                    const Rgb c = shade_relief(class_color(scene.instances[tag].type), sample_normal(raster, k));
+                    const Rgb c =
+                        shade_relief(class_color(scene.instances[tag].type), sample_normal(raster, k));
                     sum.r += c.r, sum.g += c.g, sum.b += c.b;
                     ++covered;
                 }
             if (covered == 0) continue;
             const Rgb under = canvas.pixel(x, y);
             const float keep = 1.0f - covered * weight;
-            canvas.set_pixel(x, y, {under.r * keep + sum.r * weight, under.g * keep + sum.g * weight,
-                                    under.b * keep + sum.b * weight});
+            canvas.set_pixel(x, y,
+                             {under.r * keep + sum.r * weight, under.g * keep + sum.g * weight,
+                              under.b * keep + sum.b * weight});
         }
     return canvas.encode_png();
 }

@@ -105,8 +105,9 @@ void rasterize_scene(const Scene& scene, const ScreenMap& map, MeshRaster& raste
         for (size_t v = 0; v < mesh.vertices.size(); ++v) {
             const Vec3& q = mesh.vertices[v];
             const Vec3 n = unit_or_zero(view.apply((*normals)[v]));
-            corners[v] = {ox + dot(sx, q), oy + dot(sy, q), static_cast<float>(oz + dot(view.z, q)),
-                          static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
+            corners[v] = {
+                ox + dot(sx, q),         oy + dot(sy, q),         static_cast<float>(oz + dot(view.z, q)),
+                static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
         }
 
         const int vertex_count = static_cast<int>(mesh.vertices.size());
@@ -126,7 +127,9 @@ void rasterize_scene(const Scene& scene, const ScreenMap& map, MeshRaster& raste
                 const double along = v.nx * face.x + v.ny * face.y + v.nz * face.z;
                 if (v.nx == 0.0f && v.ny == 0.0f && v.nz == 0.0f) {
                     // No smooth normal (cancelled or degenerate): use the face's.
-                    v.nx = static_cast<float>(face.x), v.ny = static_cast<float>(face.y), v.nz = static_cast<float>(face.z);
+                    v.nx = static_cast<float>(face.x);
+                    v.ny = static_cast<float>(face.y);
+                    v.nz = static_cast<float>(face.z);
                 } else if (along < 0.0) {
                     // The smooth normal belongs to the other side of this face.
                     v.nx = -v.nx, v.ny = -v.ny, v.nz = -v.nz;

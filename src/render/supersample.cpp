@@ -31,7 +31,8 @@ void draw_hidden_edge(std::vector<Rgb>& color, const std::vector<float>& depth, 
             const size_t i = static_cast<size_t>(y) * width + x;
             if (c <= 0.0f || da + t * (db - da) < depth[i]) continue;
             Rgb& p = color[i];
-            p = {p.r + (outline_grey.r - p.r) * c, p.g + (outline_grey.g - p.g) * c, p.b + (outline_grey.b - p.b) * c};
+            p = {p.r + (outline_grey.r - p.r) * c, p.g + (outline_grey.g - p.g) * c,
+                 p.b + (outline_grey.b - p.b) * c};
         }
 }
 

@@ -16,7 +16,9 @@ using render::RasterVertex;
 
 namespace {
 
-RasterVertex at(double x, double y, float depth = 0.0f) { return {x, y, depth, 0.0f, 0.0f, 1.0f}; }
+RasterVertex at(double x, double y, float depth = 0.0f) {
+    return {x, y, depth, 0.0f, 0.0f, 1.0f};
+}
 
 int tagged(const MeshRaster& r) {
     int n = 0;
@@ -34,7 +36,8 @@ TEST(RenderMeshRaster, SquareOfTwoTrianglesCoversEachPixelOnce) {
     EXPECT_EQ(r.fragments(), 100u);
     EXPECT_EQ(tagged(r), 100);
     for (int y = 0; y < 20; ++y)
-        for (int x = 0; x < 20; ++x) EXPECT_EQ(r.tag(y * 20 + x) >= 0, x >= 2 && x < 12 && y >= 2 && y < 12) << x << "," << y;
+        for (int x = 0; x < 20; ++x)
+            EXPECT_EQ(r.tag(y * 20 + x) >= 0, x >= 2 && x < 12 && y >= 2 && y < 12) << x << "," << y;
 }
 
 TEST(RenderMeshRaster, FanHasNoCracksAndNoOverlaps) {
@@ -70,9 +73,12 @@ TEST(RenderMeshRaster, NearerTriangleWinsInEitherOrderAndWinding) {
     for (const bool near_first : {false, true}) {
         MeshRaster r(10, 10);
         const RasterVertex a = at(0, 0, 1.0f), b = at(10, 0, 1.0f), c = at(0, 10, 1.0f);  // far (depth 1)
-        const RasterVertex d = at(0, 0, 2.0f), e = at(0, 10, 2.0f), f = at(10, 10, 2.0f);  // near, other winding
-        if (near_first) r.draw_triangle(d, e, f, 1), r.draw_triangle(a, b, c, 0);
-        else r.draw_triangle(a, b, c, 0), r.draw_triangle(d, e, f, 1);
+        const RasterVertex d = at(0, 0, 2.0f), e = at(0, 10, 2.0f),
+                           f = at(10, 10, 2.0f);  // near, other winding
+        if (near_first)
+            r.draw_triangle(d, e, f, 1), r.draw_triangle(a, b, c, 0);
+        else
+            r.draw_triangle(a, b, c, 0), r.draw_triangle(d, e, f, 1);
         EXPECT_EQ(r.tag(1 * 10 + 6), 0);  // only the far one
         EXPECT_EQ(r.tag(8 * 10 + 3), 1);  // only the near one
         EXPECT_EQ(r.tag(4 * 10 + 1), 1);  // both: near wins
@@ -82,7 +88,8 @@ TEST(RenderMeshRaster, NearerTriangleWinsInEitherOrderAndWinding) {
 
 TEST(RenderMeshRaster, InterpolatesDepthAndNormalLinearly) {
     MeshRaster r(8, 8);
-    RasterVertex a{0, 0, 0.0f, 1.0f, 0.0f, 0.0f}, b{8, 0, 8.0f, 1.0f, 0.0f, 0.0f}, c{0, 8, 0.0f, 0.0f, 1.0f, 0.0f};
+    RasterVertex a{0, 0, 0.0f, 1.0f, 0.0f, 0.0f}, b{8, 0, 8.0f, 1.0f, 0.0f, 0.0f},
+        c{0, 8, 0.0f, 0.0f, 1.0f, 0.0f};
     r.draw_triangle(a, b, c, 0);
     const size_t i = 2 * 8 + 3;  // centre (3.5, 2.5)
     EXPECT_NEAR(r.depth(i), 3.5f, 1e-5);
@@ -120,8 +127,10 @@ TEST(RenderMeshRaster, ClipsToThePicture) {
 TEST(RenderMeshNormals, InconsistentWindingStillGivesOneSidedNormals) {
     // A unit cube (8 shared corners) with half of its faces wound the wrong way.
     TriangleMesh cube;
-    for (int i = 0; i < 8; ++i) cube.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int i = 0; i < 8; ++i)
+        cube.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (int f = 0; f < 6; ++f) {
         const auto& q = quads[f];
         if (f % 2) {

@@ -20,9 +20,12 @@ namespace {
 // A box centred on the origin with half sides h, outward counter-clockwise faces.
 TriangleMesh box_mesh(Vec3 h) {
     TriangleMesh m;
-    for (int i = 0; i < 8; ++i) m.vertices.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    for (const auto& q : quads) m.triangles.push_back({q[0], q[1], q[2]}), m.triangles.push_back({q[0], q[2], q[3]});
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads)
+        m.triangles.push_back({q[0], q[1], q[2]}), m.triangles.push_back({q[0], q[2], q[3]});
     return m;
 }
 
@@ -65,9 +68,13 @@ double hue_distance(render::Rgb a, render::Rgb b) {
     return std::min(d, 360.0 - d);
 }
 
-bool saturated(render::Rgb c) { return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.15f; }
+bool saturated(render::Rgb c) {
+    return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.15f;
+}
 // Any tint at all: mesh pixels however dark or light their shading, not the grey outline.
-bool tinted(render::Rgb c) { return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.02f; }
+bool tinted(render::Rgb c) {
+    return std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) > 0.02f;
+}
 
 }  // namespace
 
@@ -86,7 +93,8 @@ TEST(RenderScene, CubeAtTheDomainCentreInItsClassColour) {
     for (int y = 0; y < img.height; ++y)
         for (int x = 0; x < img.width; ++x)
             if (const auto c = img.at(x, y); saturated(c)) {
-                darkest = std::min(darkest, c.r + c.g + c.b), brightest = std::max(brightest, c.r + c.g + c.b);
+                darkest = std::min(darkest, c.r + c.g + c.b),
+                brightest = std::max(brightest, c.r + c.g + c.b);
             }
     EXPECT_GT(brightest - darkest, 0.3f);
 }
@@ -100,7 +108,8 @@ TEST(RenderScene, NearerInstanceWinsAlongTheViewDirection) {
         s.instances = near_first ? std::vector{near, far} : std::vector{far, near};
         const auto img = test::decode_png(render_scene_png(cube_data_3d(), s, {.width = 240}));
         const auto centre = img.at(img.width / 2, img.height / 2);  // both cubes project here
-        EXPECT_LT(hue_distance(centre, render::class_color(1)), 5.0) << "near instance listed first: " << near_first;
+        EXPECT_LT(hue_distance(centre, render::class_color(1)), 5.0)
+            << "near instance listed first: " << near_first;
     }
 }
 
@@ -111,7 +120,8 @@ TEST(RenderScene, WindingDoesNotMatter) {
     // Reversed everywhere, then every other triangle reversed.
     for (auto& t : s.meshes[0].triangles) std::swap(t[1], t[2]);
     EXPECT_EQ(render_scene_png(ex, s, {.width = 160}), reference);
-    for (size_t k = 0; k < s.meshes[0].triangles.size(); k += 2) std::swap(s.meshes[0].triangles[k][1], s.meshes[0].triangles[k][2]);
+    for (size_t k = 0; k < s.meshes[0].triangles.size(); k += 2)
+        std::swap(s.meshes[0].triangles[k][1], s.meshes[0].triangles[k][2]);
     EXPECT_EQ(render_scene_png(ex, s, {.width = 160}), reference);
 }
 
@@ -158,7 +168,9 @@ TEST(RenderScene, TwoDimensionalCubeSeenFromAboveWhereThePreviewPutsTheElement) 
     // A 2 x 2 square seen from above.
     EXPECT_NEAR(x1 + 1 - x0, 2.0 * frame.scale, 2.0);
     EXPECT_NEAR(y1 + 1 - y0, 2.0 * frame.scale, 2.0);
-    EXPECT_EQ(test::color_distance(img.at(static_cast<int>(frame.px(7)), static_cast<int>(frame.py(3))), render::white), 0);
+    EXPECT_EQ(test::color_distance(img.at(static_cast<int>(frame.px(7)), static_cast<int>(frame.py(3))),
+                                   render::white),
+              0);
 }
 
 TEST(RenderScene, TwoDimensionalRotationAboutZTurnsAnElongatedBox) {
@@ -206,10 +218,12 @@ TEST(RenderScene, EmptySceneIsJustTheDomain) {
     for (const int dimension : {2, 3}) {
         Exemplar ex;
         ex.dimension = dimension;
-        ex.domain = dimension == 2 ? Domain::box({0, 0, 0}, {3, 2, 0}, 2) : Domain::box({0, 0, 0}, {1, 2, 3}, 3);
+        ex.domain =
+            dimension == 2 ? Domain::box({0, 0, 0}, {3, 2, 0}, 2) : Domain::box({0, 0, 0}, {1, 2, 3}, 3);
         Scene s;
         s.dimension = dimension;
-        EXPECT_EQ(render_scene_png(ex, s, {.width = 120}), render_png(ex, {.width = 120})) << dimension << "D";
+        EXPECT_EQ(render_scene_png(ex, s, {.width = 120}), render_png(ex, {.width = 120}))
+            << dimension << "D";
     }
 }
 
@@ -233,7 +247,8 @@ TEST(RenderScene, DegenerateTrianglesDoNotCrash) {
     s.instances.push_back(squashed);
     const auto img = test::decode_png(render_scene_png(ex, s, {.width = 160}));
     ASSERT_EQ(img.width, 160);
-    EXPECT_LT(hue_distance(img.at(img.width / 2, img.height / 2), render::class_color(0)), 5.0);  // the cube still shows
+    EXPECT_LT(hue_distance(img.at(img.width / 2, img.height / 2), render::class_color(0)),
+              5.0);  // the cube still shows
 }
 
 TEST(RenderScene, RejectsSceneThatDoesNotFitTheData) {
