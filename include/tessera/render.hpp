@@ -2,11 +2,14 @@
 // 2D: elements as disks (radius, or a size derived from the spacing) or as
 // polylines through their samples, coloured by class, with the domain outline.
 // 3D: an orthographic view along a tilted axis with depth shading.
+// Element meshes (tessera/geometry.hpp): the triangles of a Scene, shaded, in the
+// same views.
 #pragma once
 
 #include <string>
 
 #include "tessera/exemplar.hpp"
+#include "tessera/geometry.hpp"
 
 namespace tessera {
 
@@ -14,12 +17,25 @@ struct RenderOptions {
     int width = 800;           // picture width in pixels; height follows the aspect ratio
     bool show_domain = true;   // draw the domain outline
     bool show_samples = true;  // mark the samples of multi-sample elements
+    // Element meshes (geometry.hpp) instead of disks / spheres: on = always (types
+    // without a mesh file get default shapes), off = never, automatic = draw element
+    // meshes when some type of the data has a mesh file (ElementType::mesh).
+    enum class Meshes { automatic, on, off } meshes = Meshes::automatic;
 };
 
 // PNG bytes (8-bit RGB).
 std::string render_png(const Exemplar& data, const RenderOptions& options = {});
 // SVG text.
 std::string render_svg(const Exemplar& data, const RenderOptions& options = {});
+// PNG bytes (8-bit RGB) of the triangle meshes of `scene`, an arrangement of `data`
+// (which supplies the domain outline and, with the meshes, the framing; Scene::dimension
+// must equal data.dimension). 3D: the camera of the 3D preview, z-buffered and smoothly
+// shaded, both sides of a surface lit. 2D: seen from above (x right, y up) at the
+// pixel scale of render_png, lit from the upper left so the meshes read as relief;
+// parts outside that frame are cut off. Colours by SceneInstance::type.
+// Throws Error(input) for data render_png cannot draw or an instance naming a mesh
+// the scene does not have, Error(option) for a bad width.
+std::string render_scene_png(const Exemplar& data, const Scene& scene, const RenderOptions& options = {});
 // Writes .png or .svg by extension, atomically. Throws Error(option) for another extension.
 void render_to_file(const Exemplar& data, const std::string& path, const RenderOptions& options = {});
 

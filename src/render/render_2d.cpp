@@ -15,30 +15,6 @@ namespace {
 
 constexpr double min_radius_px = 0.75;  // smallest disk drawn, so dense outputs stay visible
 
-void draw_domain_outline(Canvas& canvas, const Frame2D& f, const Domain& domain) {
-    const double hw = 0.75;
-    if (domain.kind() == Domain::Kind::polygon) {  // outer ring and holes
-        const DomainSource src = domain.source();
-        std::vector<std::vector<Vec3>> rings = src.holes;
-        rings.push_back(src.outer);
-        for (const auto& ring : rings)
-            for (size_t k = 0; k < ring.size(); ++k) {
-                const Vec3& a = ring[k];
-                const Vec3& b = ring[(k + 1) % ring.size()];
-                canvas.add_capsule(f.px(a.x), f.py(a.y), f.px(b.x), f.py(b.y), hw);
-            }
-        canvas.composite(outline_grey);
-        return;
-    }
-    const Box& b = domain.bounds();
-    const double x0 = f.px(b.lo.x), x1 = f.px(b.hi.x), y0 = f.py(b.lo.y), y1 = f.py(b.hi.y);
-    canvas.add_capsule(x0, y0, x1, y0, hw);
-    canvas.add_capsule(x1, y0, x1, y1, hw);
-    canvas.add_capsule(x1, y1, x0, y1, hw);
-    canvas.add_capsule(x0, y1, x0, y0, hw);
-    canvas.composite(outline_grey);
-}
-
 void draw_disk_element(Canvas& canvas, const Frame2D& f, const Style& style, const Element& e) {
     const Rgb color = class_color(e.type);
     const double cx = f.px(e.position.x), cy = f.py(e.position.y);
@@ -77,6 +53,30 @@ void draw_polyline_element(Canvas& canvas, const Frame2D& f, const Style& style,
 }
 
 }  // namespace
+
+void draw_domain_outline(Canvas& canvas, const Frame2D& f, const Domain& domain) {
+    const double hw = 0.75;
+    if (domain.kind() == Domain::Kind::polygon) {  // outer ring and holes
+        const DomainSource src = domain.source();
+        std::vector<std::vector<Vec3>> rings = src.holes;
+        rings.push_back(src.outer);
+        for (const auto& ring : rings)
+            for (size_t k = 0; k < ring.size(); ++k) {
+                const Vec3& a = ring[k];
+                const Vec3& b = ring[(k + 1) % ring.size()];
+                canvas.add_capsule(f.px(a.x), f.py(a.y), f.px(b.x), f.py(b.y), hw);
+            }
+        canvas.composite(outline_grey);
+        return;
+    }
+    const Box& b = domain.bounds();
+    const double x0 = f.px(b.lo.x), x1 = f.px(b.hi.x), y0 = f.py(b.lo.y), y1 = f.py(b.hi.y);
+    canvas.add_capsule(x0, y0, x1, y0, hw);
+    canvas.add_capsule(x1, y0, x1, y1, hw);
+    canvas.add_capsule(x1, y1, x0, y1, hw);
+    canvas.add_capsule(x0, y1, x0, y0, hw);
+    canvas.composite(outline_grey);
+}
 
 std::string render_png_2d(const Exemplar& data, const RenderOptions& options) {
     const Style style = make_style(data);

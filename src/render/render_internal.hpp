@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "render/raster.hpp"
+#include "render/style.hpp"
 #include "tessera/exemplar.hpp"
 #include "tessera/render.hpp"
 
@@ -13,5 +15,9 @@ std::string render_png_2d(const Exemplar& data, const RenderOptions& options);
 std::string render_png_3d(const Exemplar& data, const RenderOptions& options);
 std::string render_svg_2d(const Exemplar& data, const RenderOptions& options);
 std::string render_svg_3d(const Exemplar& data, const RenderOptions& options);
+
+// The 2D domain outline in grey (polygon rings, or the bounding rectangle), shared
+// by the disk preview and the mesh picture.
+void draw_domain_outline(Canvas& canvas, const Frame2D& frame, const Domain& domain);
 
 }  // namespace tessera::render
