@@ -29,10 +29,12 @@ std::string render_png(const Exemplar& data, const RenderOptions& options = {});
 std::string render_svg(const Exemplar& data, const RenderOptions& options = {});
 // PNG bytes (8-bit RGB) of the triangle meshes of `scene`, an arrangement of `data`
 // (which supplies the domain outline and, with the meshes, the framing; Scene::dimension
-// must equal data.dimension). 3D: the camera of the 3D preview, z-buffered and smoothly
-// shaded, both sides of a surface lit. 2D: seen from above (x right, y up) at the
-// pixel scale of render_png, lit from the upper left so the meshes read as relief;
-// parts outside that frame are cut off. Colours by SceneInstance::type.
+// must equal data.dimension). 3D: the camera of the 3D preview, z-buffered and shaded,
+// both sides of a surface lit; normals are smooth across gentle bends and split where
+// faces meet at more than 40 degrees, so spheres and tubes look round and boxes keep
+// flat faces with crisp edges. 2D: seen from above (x right, y up) at the pixel scale
+// of render_png, lit from the upper left so the meshes read as relief; parts outside
+// that frame are cut off. Colours by SceneInstance::type.
 // Throws Error(input) for data render_png cannot draw or an instance naming a mesh
 // the scene does not have, Error(option) for a bad width.
 std::string render_scene_png(const Exemplar& data, const Scene& scene, const RenderOptions& options = {});

@@ -79,18 +79,18 @@ void rasterize_scene(const Scene& scene, const ScreenMap& map, MeshRaster& raste
     for (const auto& instance : scene.instances) ++uses[instance.mesh];
     std::vector<std::vector<Vec3>> shared(scene.meshes.size());
     std::vector<Vec3> single;
-    std::vector<RasterVertex> corners;  // the current mesh in picture space, reused
+    std::vector<RasterVertex> points;  // the current mesh's vertices in picture space, reused
 
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const SceneInstance& instance = scene.instances[i];
         const TriangleMesh& mesh = scene.meshes[instance.mesh];
-        const std::vector<Vec3>* normals = &single;
+        const std::vector<Vec3>* normals = &single;  // 3 per triangle (corner_normals)
         if (uses[instance.mesh] > 1) {
             auto& cached = shared[instance.mesh];
-            if (cached.empty() && !mesh.vertices.empty()) cached = vertex_normals(mesh);
+            if (cached.empty() && !mesh.triangles.empty()) cached = corner_normals(mesh);
             normals = &cached;
         } else {
-            single = vertex_normals(mesh);
+            single = corner_normals(mesh);
         }
 
         // Local point -> picture: the pose, then the camera, folded into one affine map.
@@ -101,18 +101,16 @@ void rasterize_scene(const Scene& scene, const ScreenMap& map, MeshRaster& raste
         const double oy = (map.y1 - dot(p.offset, map.up)) * map.scale;
         const double oz = dot(p.offset, map.toward);
 
-        corners.resize(mesh.vertices.size());
+        points.resize(mesh.vertices.size());
         for (size_t v = 0; v < mesh.vertices.size(); ++v) {
             const Vec3& q = mesh.vertices[v];
-            const Vec3 n = unit_or_zero(view.apply((*normals)[v]));
-            corners[v] = {
-                ox + dot(sx, q),         oy + dot(sy, q),         static_cast<float>(oz + dot(view.z, q)),
-                static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
+            points[v] = {ox + dot(sx, q), oy + dot(sy, q), static_cast<float>(oz + dot(view.z, q))};
         }
 
         const int vertex_count = static_cast<int>(mesh.vertices.size());
         const int tag = static_cast<int>(i);
-        for (const auto& t : mesh.triangles) {
+        for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+            const auto& t = mesh.triangles[f];
             if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= vertex_count || t[1] >= vertex_count ||
                 t[2] >= vertex_count)
                 continue;
@@ -122,18 +120,15 @@ void rasterize_scene(const Scene& scene, const ScreenMap& map, MeshRaster& raste
             const Vec3& a = mesh.vertices[t[0]];
             Vec3 face = unit_or_zero(view.apply(cross(mesh.vertices[t[1]] - a, mesh.vertices[t[2]] - a)));
             if (face.z < 0.0) face = -face;
-            RasterVertex c[3] = {corners[t[0]], corners[t[1]], corners[t[2]]};
-            for (RasterVertex& v : c) {
-                const double along = v.nx * face.x + v.ny * face.y + v.nz * face.z;
-                if (v.nx == 0.0f && v.ny == 0.0f && v.nz == 0.0f) {
-                    // No smooth normal (cancelled or degenerate): use the face's.
-                    v.nx = static_cast<float>(face.x);
-                    v.ny = static_cast<float>(face.y);
-                    v.nz = static_cast<float>(face.z);
-                } else if (along < 0.0) {
-                    // The smooth normal belongs to the other side of this face.
-                    v.nx = -v.nx, v.ny = -v.ny, v.nz = -v.nz;
-                }
+            RasterVertex c[3] = {points[t[0]], points[t[1]], points[t[2]]};
+            for (int k = 0; k < 3; ++k) {
+                Vec3 n = unit_or_zero(view.apply((*normals)[3 * f + k]));
+                if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0)
+                    n = face;  // no corner normal (a face without area): the face's
+                else if (dot(n, face) < 0.0)
+                    n = -n;  // the corner normal belongs to the other side of this face
+                c[k].nx = static_cast<float>(n.x), c[k].ny = static_cast<float>(n.y),
+                c[k].nz = static_cast<float>(n.z);
             }
             raster.draw_triangle(c[0], c[1], c[2], tag);
         }

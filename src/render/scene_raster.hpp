@@ -28,9 +28,10 @@ void check_scene(const Scene& scene, int dimension);
 Box scene_bounds(const Scene& scene);
 
 // Draws every triangle of every instance, tagged with the instance index. Normals are
-// the meshes' smooth vertex normals (mesh_normals.hpp) in view coordinates (x right,
-// y up, z toward the viewer), turned per triangle to the side of the face that the
-// viewer sees: both sides of a surface are lit, so the winding does not matter.
+// the meshes' corner normals (mesh_normals.hpp: smooth across gentle bends, split at
+// sharp edges) in view coordinates (x right, y up, z toward the viewer), turned per
+// triangle to the side of the face that the viewer sees: both sides of a surface are
+// lit, so the winding does not matter.
 void rasterize_scene(const Scene& scene, const ScreenMap& map, MeshRaster& raster);
 
 }  // namespace tessera::render

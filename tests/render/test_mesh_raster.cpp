@@ -1,6 +1,7 @@
 // Tests of the triangle rasterizer behind the mesh pictures: the top-left fill rule
 // (shared edges drawn once, no cracks), depth test, attribute interpolation, either
-// winding, degenerate input and clipping; and of the smooth vertex normals.
+// winding, degenerate input and clipping; and of the corner normals (smooth across
+// gentle bends, split at the crease angle, independent of the winding).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "render/mesh_normals.hpp"
 #include "render/mesh_raster.hpp"
+#include "render/render_test_util.hpp"
 
 using namespace tessera;
 using render::MeshRaster;
@@ -124,8 +126,11 @@ TEST(RenderMeshRaster, ClipsToThePicture) {
     EXPECT_NEAR(big.depth(5 * 30 + 10), 10.5f, 1.0f);  // depth = x, float precision at 1e7
 }
 
-TEST(RenderMeshNormals, InconsistentWindingStillGivesOneSidedNormals) {
-    // A unit cube (8 shared corners) with half of its faces wound the wrong way.
+namespace {
+
+// A unit cube (8 shared corners) with every other face wound the wrong way, plus a
+// degenerate triangle and one with an index out of range.
+TriangleMesh badly_wound_cube() {
     TriangleMesh cube;
     for (int i = 0; i < 8; ++i)
         cube.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
@@ -141,17 +146,46 @@ TEST(RenderMeshNormals, InconsistentWindingStillGivesOneSidedNormals) {
     }
     cube.triangles.push_back({0, 0, 7});   // degenerate: ignored
     cube.triangles.push_back({0, 1, 99});  // index out of range: ignored
-    const auto normals = render::vertex_normals(cube);
-    ASSERT_EQ(normals.size(), 8u);
+    return cube;
+}
+
+Vec3 centroid(const TriangleMesh& m, int t) {
+    const auto& [a, b, c] = m.triangles[t];
+    return (m.vertices[a] + m.vertices[b] + m.vertices[c]) / 3.0;
+}
+
+}  // namespace
+
+TEST(RenderMeshNormals, CubeCornersTakeTheirFacesNormalOnOneSide) {
+    const TriangleMesh cube = badly_wound_cube();
+    const auto normals = render::corner_normals(cube);
+    ASSERT_EQ(normals.size(), 3 * cube.triangles.size());
     const Vec3 centre{0.5, 0.5, 0.5};
-    const double sign = dot(normals[0], cube.vertices[0] - centre) > 0 ? 1.0 : -1.0;
-    for (int v = 0; v < 8; ++v) {
-        const Vec3 n = normals[v] * sign;
-        const Vec3 out = cube.vertices[v] - centre;
-        // Near the corner's diagonal (faces weigh by their triangles' areas at the
-        // corner, 1 or 2 halves): every face counted with the same side.
-        EXPECT_GT(dot(n, out) / (norm(n) * norm(out)), 0.9) << "vertex " << v;
+    const double sign = dot(normals[0], centroid(cube, 0) - centre) > 0 ? 1.0 : -1.0;
+    for (int t = 0; t < 12; ++t) {
+        // The face's own axis, the same side (out or in) for every face.
+        const Vec3 axis = (centroid(cube, t) - centre) * 2.0;
+        const Vec3 face{std::round(axis.x), std::round(axis.y), std::round(axis.z)};
+        for (int k = 0; k < 3; ++k) EXPECT_LT(norm(normals[3 * t + k] * sign - face), 1e-12) << t << " " << k;
     }
+    for (int c = 36; c < 42; ++c) EXPECT_EQ(norm(normals[c]), 0.0) << c;  // the ignored triangles
+}
+
+TEST(RenderMeshNormals, InconsistentWindingStillGivesOneSidedSmoothNormals) {
+    // Without a crease (180 degrees) every corner gets the average of all faces at
+    // its vertex: near the vertex's diagonal (faces weigh by their triangles' areas at
+    // the corner, 1 or 2 halves), every face counted with the same side.
+    const TriangleMesh cube = badly_wound_cube();
+    const auto normals = render::corner_normals(cube, 180.0);
+    const Vec3 centre{0.5, 0.5, 0.5};
+    const double sign = dot(normals[0], cube.vertices[cube.triangles[0][0]] - centre) > 0 ? 1.0 : -1.0;
+    for (int t = 0; t < 12; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 n = normals[3 * t + k] * sign;
+            const Vec3 out = cube.vertices[cube.triangles[t][k]] - centre;
+            EXPECT_NEAR(norm(n), 1.0, 1e-12);
+            EXPECT_GT(dot(n, out) / norm(out), 0.9) << t << " " << k;
+        }
 }
 
 TEST(RenderMeshNormals, SharpCornersOfAConsistentMeshKeepTheirFaces) {
@@ -159,10 +193,62 @@ TEST(RenderMeshNormals, SharpCornersOfAConsistentMeshKeepTheirFaces) {
     TriangleMesh t;
     t.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     t.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-    const auto normals = render::vertex_normals(t);
-    const double sign = dot(normals[0], t.vertices[0]) > 0 ? 1.0 : -1.0;
-    for (int v = 0; v < 4; ++v) {
-        const Vec3 n = normals[v] * sign;
-        EXPECT_GT(dot(n, t.vertices[v]) / (norm(n) * norm(t.vertices[v])), 0.99) << "vertex " << v;
+    const auto smooth = render::corner_normals(t, 180.0);
+    const double sign = dot(smooth[0], t.vertices[0]) > 0 ? 1.0 : -1.0;
+    for (int f = 0; f < 4; ++f)
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 n = smooth[3 * f + k] * sign;
+            const Vec3& v = t.vertices[t.triangles[f][k]];
+            EXPECT_GT(dot(n, v) / (norm(n) * norm(v)), 0.99) << f << " " << k;
+        }
+    // With the default crease every corner keeps its face's normal, outward like the rest.
+    const auto flat = render::corner_normals(t);
+    for (int f = 0; f < 4; ++f) {
+        const Vec3 out = centroid(t, f) / norm(centroid(t, f));
+        for (int k = 0; k < 3; ++k) EXPECT_GT(dot(flat[3 * f + k] * sign, out), 1.0 - 1e-12) << f << " " << k;
+    }
+}
+
+TEST(RenderMeshNormals, IcosphereStaysSmooth) {
+    const TriangleMesh sphere = test::icosphere(2, 1.0);
+    const auto normals = render::corner_normals(sphere);
+    const double sign = dot(normals[0], sphere.vertices[sphere.triangles[0][0]]) > 0 ? 1.0 : -1.0;
+    std::vector<Vec3> at_vertex(sphere.vertices.size());
+    for (size_t t = 0; t < sphere.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            // Not split: every corner of a vertex has the same normal, close to the radius.
+            const int v = sphere.triangles[t][k];
+            const Vec3 n = normals[3 * t + k] * sign;
+            if (at_vertex[v] == Vec3{}) at_vertex[v] = n;
+            EXPECT_LT(norm(n - at_vertex[v]), 1e-12) << t << " " << k;
+            EXPECT_GT(dot(n, sphere.vertices[v]), 0.999) << t << " " << k;
+        }
+}
+
+TEST(RenderMeshNormals, CreaseAngleDecidesBetweenSmoothAndSplit) {
+    // Two strips of two triangles folded along the x axis by 30 and by 50 degrees.
+    for (const double fold : {30.0, 50.0}) {
+        const double a = fold * std::numbers::pi / 180.0;
+        TriangleMesh m;
+        m.vertices = {{0, 0, 0},
+                      {1, 0, 0},
+                      {0, 1, 0},
+                      {1, 1, 0},
+                      {0, -std::cos(a), std::sin(a)},
+                      {1, -std::cos(a), std::sin(a)}};
+        m.triangles = {{0, 1, 3}, {0, 3, 2}, {1, 0, 4}, {1, 4, 5}};
+        const auto normals = render::corner_normals(m);
+        const Vec3 up{0, 0, 1};
+        // Corner 0 of triangle 0 and corner 1 of triangle 2 sit on vertex 0, on either side.
+        const Vec3 here = normals[0], there = normals[3 * 2 + 1];
+        if (fold < render::crease_angle_degrees) {
+            EXPECT_LT(norm(here - there), 1e-12);
+            const double tilt = std::acos(dot(here, up));  // between the faces
+            EXPECT_GT(tilt, 0.2 * a);
+            EXPECT_LT(tilt, 0.8 * a);
+        } else {
+            EXPECT_GT(dot(here, up), 1.0 - 1e-12);  // the flat side's own normal
+            EXPECT_NEAR(std::acos(dot(there, up)), a, 1e-9);
+        }
     }
 }

@@ -1,6 +1,7 @@
 // Tests of render_scene_png, the pictures of element meshes, on scenes built by hand:
-// 3D colour by class, depth order along the view, 2D placement and rotation in the
-// 2D preview's frame, winding independence, determinism, empty and degenerate scenes.
+// 3D colour by class, flat faces with crisp edges on a box and smooth shading on a
+// sphere, depth order along the view, 2D placement and rotation in the 2D preview's
+// frame, winding independence, determinism, empty and degenerate scenes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -88,7 +89,7 @@ TEST(RenderScene, CubeAtTheDomainCentreInItsClassColour) {
     EXPECT_LT(hue_distance(centre, render::class_color(0)), 5.0);
     EXPECT_EQ(test::color_distance(img.at(0, 0), render::white), 0);
     EXPECT_EQ(test::color_distance(img.at(img.width - 1, img.height - 1), render::white), 0);
-    // Smooth shading: the cube is not one flat colour.
+    // Shaded: the cube is not one flat colour (its faces face the light differently).
     float darkest = 3.0f, brightest = 0.0f;
     for (int y = 0; y < img.height; ++y)
         for (int x = 0; x < img.width; ++x)
@@ -97,6 +98,82 @@ TEST(RenderScene, CubeAtTheDomainCentreInItsClassColour) {
                 brightest = std::max(brightest, c.r + c.g + c.b);
             }
     EXPECT_GT(brightest - darkest, 0.3f);
+}
+
+TEST(RenderScene, CubeFacesAreFlatWithDistinctShades) {
+    // Pixels well inside each face the camera sees (a 5 x 5 grid over the middle 60%):
+    // one colour per face once the depth fog (which lightens the farther parts of a
+    // face a little) is taken out, and a different colour on each face.
+    const Exemplar ex = cube_data_3d();
+    const Scene s = one_cube_scene_3d();
+    const RenderOptions options{.width = 300, .show_domain = false};  // no edges across the faces
+    const auto img = test::decode_png(render_scene_png(ex, s, options));
+    const render::View3D view = render::View3D::standard();
+    std::vector<render::Sphere> extent;  // framed as render_scene_png frames it
+    for (const auto& [a, b] : render::box_edges({{1.5, 1.5, 1.5}, {2.5, 2.5, 2.5}}))
+        for (const Vec3& corner : {a, b}) extent.push_back({corner, 0.0, 0, false});
+    const auto frame = render::make_frame_3d(ex, extent, view, options);
+    ASSERT_EQ(img.width, frame.width);
+    std::vector<render::Rgb> means;
+    for (int axis = 0; axis < 3; ++axis)
+        for (const double side : {-1.0, 1.0}) {
+            Vec3 n;
+            n[axis] = side;
+            if (dot(n, view.toward) < 0.2) continue;                     // hidden or seen edge-on
+            const Vec3 u = Vec3{n.y, n.z, n.x} * side, w = cross(n, u);  // in the face
+            render::Rgb sum{0, 0, 0}, lo{1, 1, 1}, hi{0, 0, 0};
+            for (int i = -2; i <= 2; ++i)
+                for (int j = -2; j <= 2; ++j) {
+                    const Vec3 p = Vec3{2, 2, 2} + n * 0.5 + u * (0.15 * i) + w * (0.15 * j);
+                    const auto fogged =
+                        img.at(static_cast<int>(frame.px(view, p)), static_cast<int>(frame.py(view, p)));
+                    EXPECT_LT(hue_distance(fogged, render::class_color(0)), 5.0);
+                    // shade_sphere: toward_white(lit, 0.4 * farness), undone.
+                    const float f = static_cast<float>(
+                        0.4 * std::clamp((frame.near - view.depth(p)) / (frame.near - frame.far), 0.0, 1.0));
+                    const render::Rgb c{(fogged.r - f) / (1 - f), (fogged.g - f) / (1 - f),
+                                        (fogged.b - f) / (1 - f)};
+                    sum.r += c.r / 25, sum.g += c.g / 25, sum.b += c.b / 25;
+                    lo = {std::min(lo.r, c.r), std::min(lo.g, c.g), std::min(lo.b, c.b)};
+                    hi = {std::max(hi.r, c.r), std::max(hi.g, c.g), std::max(hi.b, c.b)};
+                }
+            EXPECT_LE(test::color_distance(lo, hi), 3) << "face " << n.x << " " << n.y << " " << n.z;
+            means.push_back(sum);
+        }
+    ASSERT_EQ(means.size(), 3u);  // -y, +x and the top
+    for (size_t a = 0; a < 3; ++a)
+        for (size_t b = a + 1; b < 3; ++b)
+            EXPECT_GE(test::color_distance(means[a], means[b]), 20) << a << " " << b;
+}
+
+TEST(RenderScene, IcosphereShadesSmoothly) {
+    // A sphere of 320 triangles: across the edges between its faces, as anywhere inside
+    // its outline, neighbouring pixels differ little (flat faces would step by ~10
+    // degrees of normal, tens of 8-bit levels).
+    const Exemplar ex = cube_data_3d();
+    Scene s = one_cube_scene_3d();
+    s.meshes = {test::icosphere(2, 1.5)};
+    const RenderOptions options{.width = 400, .show_domain = false};
+    const auto img = test::decode_png(render_scene_png(ex, s, options));
+    const render::View3D view = render::View3D::standard();
+    std::vector<render::Sphere> extent;
+    for (const auto& [a, b] : render::box_edges({{0.5, 0.5, 0.5}, {3.5, 3.5, 3.5}}))
+        for (const Vec3& corner : {a, b}) extent.push_back({corner, 0.0, 0, false});
+    const auto frame = render::make_frame_3d(ex, extent, view, options);
+    ASSERT_EQ(img.width, frame.width);
+    const double cx = frame.px(view, {2, 2, 2}), cy = frame.py(view, {2, 2, 2}), r = 1.5 * frame.scale;
+    int steepest = 0, inside = 0;
+    for (int y = 0; y + 1 < img.height; ++y)
+        for (int x = 0; x + 1 < img.width; ++x) {
+            if (std::hypot(x + 0.5 - cx, y + 0.5 - cy) > 0.85 * r) continue;
+            ++inside;
+            const auto c = img.at(x, y);
+            EXPECT_LT(hue_distance(c, render::class_color(0)), 8.0);
+            steepest = std::max({steepest, test::color_distance(c, img.at(x + 1, y)),
+                                 test::color_distance(c, img.at(x, y + 1))});
+        }
+    EXPECT_GT(inside, 10000);
+    EXPECT_LE(steepest, 6);
 }
 
 TEST(RenderScene, NearerInstanceWinsAlongTheViewDirection) {
