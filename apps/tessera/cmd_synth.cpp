@@ -413,7 +413,9 @@ Subcommand add_synth_command(CLI::App& app) {
                     "radial:CX,CY[,CZ] (away from a centre; in 3D from the vertical axis through it) or "
                     "vortex:CX,CY[,CZ] (circling a centre counter-clockwise about +z), polyline:X1,Y1[,Z1],X2,Y2[,Z2],... "
                     "(tangent of the nearest segment) or trefoil:CX,CY,CZ,SCALE (3D). The exemplar's +x axis "
-                    "follows the field. Default: none (the exemplar's frame everywhere).");
+                    "follows the field. From files (docs/fields.md): grid:FILE.json (vectors at grid nodes, "
+                    "interpolated) or mesh:FILE.ply|FILE.obj (3D, a direction per vertex). "
+                    "Default: none (the exemplar's frame everywhere).");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { run_synth(*args); }};
 }

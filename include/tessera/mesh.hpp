@@ -25,4 +25,19 @@ TriangleMesh read_triangle_mesh(const std::string& path);
 TriangleMesh parse_obj(const std::string& text, const std::string& source);
 TriangleMesh parse_ply_mesh(const std::string& text, const std::string& source);
 
+// A mesh (or, without faces, a point cloud) with one direction per vertex: the input of
+// a mesh-vertex orientation field (tessera/field.hpp).
+struct VertexDirectionMesh {
+    TriangleMesh mesh;
+    std::vector<Vec3> directions;  // directions[i] belongs to mesh.vertices[i]
+};
+
+// Reads an ASCII PLY whose vertex element has x, y, z and the direction vx, vy, vz (faces
+// optional), or an OBJ whose vn lines give the directions in the order of its v lines (as
+// many vn as v lines; face normal references are ignored), chosen by extension. Errors as
+// read_triangle_mesh; a missing direction property or a v / vn count mismatch is Error(input).
+VertexDirectionMesh read_vertex_directions(const std::string& path);
+VertexDirectionMesh parse_obj_vertex_directions(const std::string& text, const std::string& source);
+VertexDirectionMesh parse_ply_vertex_directions(const std::string& text, const std::string& source);
+
 }  // namespace tessera

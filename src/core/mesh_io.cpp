@@ -1,5 +1,6 @@
-// core/mesh_io.cpp — small readers for the triangle meshes that bound 3D domains:
-// Wavefront OBJ and ASCII PLY. Hand-written because only vertices and faces are
+// core/mesh_io.cpp — small readers for the triangle meshes that bound 3D domains
+// (and, with a direction per vertex, carry mesh orientation fields): Wavefront OBJ
+// and ASCII PLY. Hand-written because only vertices, faces and per-vertex vectors are
 // needed and every error must name the file and line, which the few-line parsing
 // here makes easy (binary PLY is refused with a clear message).
 #include <algorithm>
@@ -48,9 +49,9 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-}  // namespace
-
-TriangleMesh parse_obj(const std::string& text, const std::string& source) {
+// The OBJ reader; with `normals`, vn lines are collected too (in file order).
+TriangleMesh read_obj(const std::string& text, const std::string& source, std::vector<Vec3>* normals,
+                      int* last_normal_line) {
     TriangleMesh mesh;
     std::istringstream in(text);
     std::string line;
@@ -66,6 +67,14 @@ TriangleMesh parse_obj(const std::string& text, const std::string& source) {
                 if (!parse_number(tokens[k + 1], v[k]))
                     fail(source, number, "'" + tokens[k + 1] + "' is not a finite number");
             mesh.vertices.push_back(v);
+        } else if (tokens[0] == "vn" && normals) {
+            if (tokens.size() < 4) fail(source, number, "a normal needs 3 components ('vn x y z')");
+            Vec3 v;
+            for (int k = 0; k < 3; ++k)
+                if (!parse_number(tokens[k + 1], v[k]))
+                    fail(source, number, "'" + tokens[k + 1] + "' is not a finite number");
+            normals->push_back(v);
+            *last_normal_line = number;
         } else if (tokens[0] == "f") {
             if (tokens.size() < 4) fail(source, number, "a face needs at least 3 vertices");
             Face face{{}, number};
@@ -93,7 +102,10 @@ TriangleMesh parse_obj(const std::string& text, const std::string& source) {
     return mesh;
 }
 
-TriangleMesh parse_ply_mesh(const std::string& text, const std::string& source) {
+// The PLY reader; with `extra`, the vertex properties named `extra_names` are read into
+// (*extra)[vertex][k] and must all be present.
+TriangleMesh read_ply(const std::string& text, const std::string& source, const std::vector<std::string>& extra_names,
+                      std::vector<Vec3>* extra) {
     std::istringstream in(text);
     std::string line;
     int number = 0;
@@ -133,13 +145,19 @@ TriangleMesh parse_ply_mesh(const std::string& text, const std::string& source) 
     TriangleMesh mesh;
     for (const Element& e : elements) {
         int ix = -1, iy = -1, iz = -1;
+        int ie[3] = {-1, -1, -1};
         for (int p = 0; p < int(e.properties.size()); ++p) {
             if (e.properties[p] == "x") ix = p;
             if (e.properties[p] == "y") iy = p;
             if (e.properties[p] == "z") iz = p;
+            for (size_t k = 0; k < extra_names.size() && k < 3; ++k)
+                if (e.properties[p] == extra_names[k]) ie[k] = p;
         }
         const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
         if (is_vertex && (ix < 0 || iy < 0 || iz < 0)) fail(source, number, "element vertex lacks x, y or z");
+        if (is_vertex && extra && (ie[0] < 0 || ie[1] < 0 || ie[2] < 0))
+            fail(source, number, "element vertex lacks " + extra_names[0] + ", " + extra_names[1] + " or " +
+                                     extra_names[2]);
         if (is_face && e.list_property < 0) fail(source, number, "element face has no vertex index list");
         for (long r = 0; r < e.count; ++r) {
             if (!next(tokens)) fail(source, number, "the file ends inside element " + e.name);
@@ -152,6 +170,13 @@ TriangleMesh parse_ply_mesh(const std::string& text, const std::string& source) 
                     if (!parse_number(tokens[idx[k]], v[k]))
                         fail(source, number, "'" + tokens[idx[k]] + "' is not a finite number");
                 mesh.vertices.push_back(v);
+                if (extra) {
+                    Vec3 w;
+                    for (int k = 0; k < 3; ++k)
+                        if (!parse_number(tokens[ie[k]], w[k]))
+                            fail(source, number, "'" + tokens[ie[k]] + "' is not a finite number");
+                    extra->push_back(w);
+                }
             } else if (is_face) {
                 // Properties before the list take one token each (rare); then count, indices.
                 const size_t at = static_cast<size_t>(e.list_property);
@@ -175,15 +200,55 @@ TriangleMesh parse_ply_mesh(const std::string& text, const std::string& source) 
     return mesh;
 }
 
-TriangleMesh read_triangle_mesh(const std::string& path) {
-    const std::string ext = lower_extension(path);
+// The text of a .obj or .ply file; `ext` receives its lower-case extension.
+std::string read_mesh_text(const std::string& path, std::string& ext) {
+    ext = lower_extension(path);
     if (ext != ".obj" && ext != ".ply")
         throw Error(ErrorKind::input, path + ": unsupported mesh format '" + ext + "' (supported: .obj, .ply)");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw Error(ErrorKind::io, path + ": cannot open the mesh file");
     std::ostringstream buffer;
     buffer << file.rdbuf();
-    return ext == ".obj" ? parse_obj(buffer.str(), path) : parse_ply_mesh(buffer.str(), path);
+    return buffer.str();
+}
+
+}  // namespace
+
+TriangleMesh parse_obj(const std::string& text, const std::string& source) {
+    return read_obj(text, source, nullptr, nullptr);
+}
+
+TriangleMesh parse_ply_mesh(const std::string& text, const std::string& source) {
+    return read_ply(text, source, {}, nullptr);
+}
+
+VertexDirectionMesh parse_obj_vertex_directions(const std::string& text, const std::string& source) {
+    VertexDirectionMesh out;
+    int last_line = 0;
+    out.mesh = read_obj(text, source, &out.directions, &last_line);
+    if (out.directions.size() != out.mesh.vertices.size())
+        fail(source, std::max(last_line, 1),
+             "the file has " + std::to_string(out.mesh.vertices.size()) + " vertices (v) but " +
+                 std::to_string(out.directions.size()) + " directions (vn); a direction field needs one vn per v");
+    return out;
+}
+
+VertexDirectionMesh parse_ply_vertex_directions(const std::string& text, const std::string& source) {
+    VertexDirectionMesh out;
+    out.mesh = read_ply(text, source, {"vx", "vy", "vz"}, &out.directions);
+    return out;
+}
+
+TriangleMesh read_triangle_mesh(const std::string& path) {
+    std::string ext;
+    const std::string text = read_mesh_text(path, ext);
+    return ext == ".obj" ? parse_obj(text, path) : parse_ply_mesh(text, path);
+}
+
+VertexDirectionMesh read_vertex_directions(const std::string& path) {
+    std::string ext;
+    const std::string text = read_mesh_text(path, ext);
+    return ext == ".obj" ? parse_obj_vertex_directions(text, path) : parse_ply_vertex_directions(text, path);
 }
 
 }  // namespace tessera

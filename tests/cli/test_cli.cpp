@@ -443,6 +443,12 @@ const ErrorCase error_cases[] = {
      {"--width"}},
     {"render_malformed_csv", "bad.csv", "x,y\n1,2\n3,4,5\n", "render '{work}/bad.csv' -o '{work}/p.png'", 3,
      {"bad.csv:3"}},
+    {"field_grid_zero_vector", "grid.json",
+     R"({"format": "tessera-field", "dimension": 2, "origin": [0, 0], "spacing": [1, 1], "size": [2, 2],
+         "vectors": [[1, 0], [0, 0], [1, 0], [1, 0]]})",
+     synth_poisson + "--field 'grid:{work}/grid.json'", 3, {"--field", "grid.json", "vectors[1]", "(1,0)"}},
+    {"field_grid_missing", "", "", synth_poisson + "--field 'grid:{work}/none.json'", 5, {"--field", "none.json"}},
+    {"field_mesh_in_2d", "", "", synth_poisson + "--field 'mesh:{ex}blob.obj'", 2, {"--field", "blob.obj", "3D"}},
 };
 // clang-format on
 
