@@ -98,4 +98,33 @@ inline double signed_volume(const TriangleMesh& m) {
     return v;
 }
 
+// A 3D scene of every kind of element: a rigid type with a mesh (3 elements, 3 samples
+// each), a deformable type with a mesh (2 elements), balls and ropes without a mesh.
+// `mesh` is the tetrahedron's OBJ file.
+inline Exemplar mixed_exemplar(const std::string& mesh) {
+    Exemplar ex;
+    ex.dimension = 3;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 10}, 3);
+    const std::vector<Vec3> layout = {{-0.6, -0.2, 0.1}, {0.4, -0.2, -0.3}, {0.2, 0.4, 0.2}};
+    ex.types.push_back({"shard", true, false, mesh, {}});
+    ex.types.push_back({"worm", false, false, mesh, {{-0.5, 0, 0}, {0, 0, 0}, {0.5, 0, 0}}});
+    ex.types.push_back({"ball", true, false, "", {}});
+    ex.types.push_back({"rope", false, false, "", {}});
+    const Quat turns[3] = {Quat{}, unit(0.3, 0.5, -0.7, 0.1), unit(-0.2, 0.9, 0.1, 0.4)};
+    for (int i = 0; i < 3; ++i) {
+        std::vector<Vec3> samples;
+        for (const Vec3& r : layout) samples.push_back(Vec3{2.0 + 2 * i, 2, 2} + turns[i].rotate(r));
+        const int e = ex.add_element(0, samples);
+        ex.elements[e].orientation = turns[i];
+        ex.elements[e].id = 100 + static_cast<std::uint64_t>(i);
+    }
+    ex.add_element(1, {{2, 6, 2}, {2.5, 6.2, 2}, {3, 6, 2.1}});
+    ex.add_element(1, {{6, 6, 2}, {6.5, 6, 2.5}, {6.5, 6, 3}});
+    ex.add_element(2, {{8, 8, 8}}, 0.3);
+    ex.add_element(2, {{8, 2, 8}}, 0.25);
+    ex.add_element(3, {{1, 8, 8}, {2, 8, 8}, {3, 8.5, 8}, {4, 8, 8}}, 0.1);
+    ex.validate("mixed");
+    return ex;
+}
+
 }  // namespace geometry_test
