@@ -20,7 +20,7 @@
 namespace tessera::geometry {
 
 TriangleMesh deform_mesh(const TriangleMesh& mesh, const std::vector<Vec3>& reference, const Vec3* samples,
-                         double scale, double falloff, int dimension) {
+                         double scale, double falloff, int dimension, const Quat& orientation) {
     const int n = static_cast<int>(reference.size());
     std::vector<Vec3> local(n);
     for (int i = 0; i < n; ++i) local[i] = reference[i] * scale;
@@ -32,8 +32,7 @@ TriangleMesh deform_mesh(const TriangleMesh& mesh, const std::vector<Vec3>& refe
     // every vertex when the samples cannot tell a bend (one sample, or all coinciding).
     Quat global;
     Vec3 global_t;
-    const Quat identity;
-    core::best_rigid_fit(local.data(), samples, n, dimension, global, global_t, nullptr, &identity);
+    core::best_rigid_fit(local.data(), samples, n, dimension, global, global_t, nullptr, &orientation);
     TriangleMesh out;
     out.triangles = mesh.triangles;
     out.vertices.reserve(mesh.vertices.size());

@@ -40,9 +40,11 @@ Pose fit_rigid_pose(const std::vector<Vec3>& reference, const Vec3* samples, con
 // Moves every vertex of `mesh` (local frame, where `reference` holds the samples) with
 // the samples `samples` (world; as many as reference): the smooth deformation of
 // geometry.hpp, after scaling the local frame by `scale`. `falloff` times the mean
-// distance between consecutive reference samples is the Gaussian width.
+// distance between consecutive reference samples is the Gaussian width. `orientation`
+// (the element's) settles what the samples leave free: the turn of a single sample,
+// the twist about a straight line of samples.
 TriangleMesh deform_mesh(const TriangleMesh& mesh, const std::vector<Vec3>& reference, const Vec3* samples,
-                         double scale, double falloff, int dimension);
+                         double scale, double falloff, int dimension, const Quat& orientation = {});
 
 // ---- reference layouts and meshes of the types (type_geometry.cpp) --------------
 struct TypeGeometry {

@@ -83,7 +83,7 @@ Scene build_scene(const Exemplar& data, const GeometryOptions& options) {
             inst.mesh = static_cast<int>(scene.meshes.size());
             if (g.has_mesh) {
                 scene.meshes.push_back(geometry::deform_mesh(g.mesh, g.reference, points.data(), el.scale,
-                                                             options.deform_falloff, data.dimension));
+                                                             options.deform_falloff, data.dimension, el.orientation));
             } else {
                 double radius = el.radius;
                 if (!(radius > 0.0)) {

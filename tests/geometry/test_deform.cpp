@@ -152,3 +152,13 @@ TEST(GeometryDeformScale, StretchesTheMesh) {
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, GeometryDeform, ::testing::Values(2, 3),
                          [](const ::testing::TestParamInfo<int>& info) { return std::to_string(info.param) + "D"; });
+
+TEST(GeometryDeformSingle, SingleSampleFollowsTheElementPose) {
+    // One sample fixes no rotation: the element's orientation turns the mesh.
+    const TriangleMesh rest = tetrahedron();
+    const Quat turn = unit(0.4, -0.3, 0.8, 0.2);
+    const Vec3 at{2, -1, 0.5};
+    const TriangleMesh out = geometry::deform_mesh(rest, {{0, 0, 0}}, &at, 1.5, 1.0, 3, turn);
+    for (size_t v = 0; v < rest.vertices.size(); ++v)
+        EXPECT_LT(norm(out.vertices[v] - (at + turn.rotate(rest.vertices[v] * 1.5))), 1e-12);
+}
