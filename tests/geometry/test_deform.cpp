@@ -150,7 +150,7 @@ TEST(GeometryDeformScale, StretchesTheMesh) {
         EXPECT_LT(norm(out.vertices[v] - (rest.vertices[v] * 2.0 + Vec3{1, 2, 3})), 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Dimensions, GeometryDeform, ::testing::Values(2, 3),
+INSTANTIATE_TEST_SUITE_P(Geometry, GeometryDeform, ::testing::Values(2, 3),
                          [](const ::testing::TestParamInfo<int>& info) { return std::to_string(info.param) + "D"; });
 
 TEST(GeometryDeformSingle, SingleSampleFollowsTheElementPose) {
