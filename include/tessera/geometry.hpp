@@ -24,8 +24,10 @@
 //   skinning with weights by distance to the reference samples; Gaussian width =
 //   deform_falloff x the mean distance between consecutive reference samples). Small
 //   per-sample translations are added so that the blend passes through the samples
-//   (at an element's ends the one-sided neighbourhoods would miss them). The result is
-//   a mesh of its own per element.
+//   (at an element's ends the one-sided neighbourhoods would miss them). What the
+//   samples leave free (the turn of a single sample, the twist about a straight line of
+//   samples) comes from the element's orientation. The result is a mesh of its own per
+//   element.
 // - Types without a mesh get a default shape: an icosphere of the element radius for
 //   single-sample elements, a tube through the samples for multi-sample elements (the
 //   radius). Without a radius, spheres get 0.5 and tubes 0.2 x the mean nearest-neighbour
@@ -78,7 +80,8 @@ struct Scene {
     std::vector<TriangleMesh> meshes;
     std::vector<SceneInstance> instances;  // one per element, in element order
 
-    // The world-space mesh of instance i (its pose applied when instanced).
+    // The world-space mesh of instance i (its pose applied when instanced); Error(option)
+    // for an index out of range.
     TriangleMesh world_mesh(int instance) const;
     // All instances in world space as one mesh; when `triangle_instance` is given it
     // receives the instance index of every triangle.
