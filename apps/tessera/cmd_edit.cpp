@@ -19,12 +19,14 @@ struct EditArgs {
 void run_edit(EditArgs& args) {
     if (!(args.options.radius >= 0.0)) fail_option("--radius must be >= 0 (0 = automatic)");
     if (args.options.threads < 0) fail_option("--threads must be >= 0");
-    check_output_path(args.output, "-o", {".json", ".csv", ".ply", ".png", ".svg"});
+    check_arrangement_output(args.output, "-o");
     const tessera::Exemplar data = load_input(args.input, args.input_domain);
+    if (tessera::is_scene_path(args.output)) tessera::build_scene(data);  // meshes checked before the edit
     const tessera::ElementEdit edit = tessera::parse_edit_json(tessera::read_file(args.edit), args.edit);
     tessera::EditReport report;
     const tessera::Exemplar result = tessera::edit_elements(data, edit, args.options, &report);
-    tessera::save(result, args.output);
+    const std::string scene = write_arrangement(result, args.output);
+    if (!args.quiet && !scene.empty()) std::cerr << "scene: " << scene << std::endl;
     if (!args.quiet)
         std::cerr << "edit: changed " << report.changed.size() << " of " << data.elements.size()
                   << " elements (threshold " << report.threshold << "); wrote " << args.output << std::endl;
@@ -42,7 +44,7 @@ Subcommand add_edit_command(CLI::App& app) {
     cmd->add_option("EDIT", args->edit, "The edit: a JSON file (docs/format.md, \"Edit files\").")
         ->required()
         ->type_name("FILE");
-    add_output_option(*cmd, args->output, "The edited arrangement: .json, .csv, .ply, .png or .svg.", true);
+    add_output_option(*cmd, args->output, "The edited arrangement: .json, .csv, .ply, .png, .svg, or a scene .obj, .mesh.ply, .gltf or .glb.", true);
     cmd->add_option("--threshold", args->options.threshold,
                     "Largest neighbourhood distance (Eq. 1, squared length units) of an element that receives "
                     "the edit; negative = automatic (0.1 x spacing^2 per neighbour of the edited element).")

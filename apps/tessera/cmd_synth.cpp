@@ -1,7 +1,8 @@
 // apps/tessera/cmd_synth.cpp — `tessera synth INPUT -o OUTPUT`: loads an exemplar,
 // builds the output domain (--scale or --domain), runs tessera::synthesize_det with
 // the DetOptions given as flags of the same names, prints progress to stderr, and
-// writes the output (and an optional --preview picture).
+// writes the output (data, a picture, or a scene of the elements' geometry) and an
+// optional --preview picture.
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -260,10 +261,13 @@ void run_synth(SynthArgs& args) {
     check_options(args);
     std::optional<DomainSpec> spec;
     if (args.domain_option->count() > 0) spec = parse_domain_spec(args.domain);
-    check_output_path(args.output, "-o", {".json", ".csv", ".ply", ".png", ".svg"});
+    check_arrangement_output(args.output, "-o");
     if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
 
     const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
+    // A scene output needs the types' meshes and reference layouts: check them (by
+    // building the exemplar's scene) before the synthesis rather than after it.
+    if (tessera::is_scene_path(args.output)) tessera::build_scene(exemplar);
     const tessera::Domain domain = output_domain(args, spec, exemplar);
     if (!args.quiet && !domain.notes().empty()) std::cerr << "synth: note: " << domain.notes() << std::endl;
     if (!args.field.empty()) args.det.field = tessera::OrientationField::parse(args.field, exemplar.dimension, "--field");
@@ -298,13 +302,14 @@ void run_synth(SynthArgs& args) {
 
     // The preview goes first: when OUTPUT exists, the whole command succeeded.
     if (!args.preview.empty()) tessera::render_to_file(result, args.preview);
-    tessera::save(result, args.output);
+    const std::string scene = write_arrangement(result, args.output);
     if (!args.quiet) {
         char line[256];
         std::snprintf(line, sizeof line, "done: %zu elements, %.2f s, final energy %.6g",
                       result.elements.size(), result.stats.total_seconds, result.stats.final_energy);
         std::cerr << line << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview)
                   << std::endl;
+        if (!scene.empty()) std::cerr << "scene: " << scene << std::endl;
         const tessera::RunStats& st = result.stats;
         if (st.physics) {
             std::snprintf(line, sizeof line,
@@ -331,8 +336,9 @@ Subcommand add_synth_command(CLI::App& app) {
         ->type_name("FILE");
     add_output_option(
         *cmd, args->output,
-        "Output file, by extension: .json (with run statistics), .csv, .ply, or a picture .png/.svg. "
-        "Written only when the run succeeds.",
+        "Output file, by extension: .json (with run statistics), .csv, .ply, a picture .png/.svg, or "
+        "the elements' geometry as a scene .obj/.mesh.ply/.gltf/.glb (docs/format.md, \"Element "
+        "geometry\"). Written only when the run succeeds.",
         true);
     args->scale_option =
         cmd->add_option(

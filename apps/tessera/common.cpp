@@ -129,6 +129,22 @@ void check_output_path(const std::string& path, const std::string& flag,
                              "cannot write " + path + ": directory " + parent.string() + " does not exist");
 }
 
+void check_arrangement_output(const std::string& path, const std::string& flag) {
+    // ".mesh.ply" ends in ".ply"; it is listed for the message.
+    check_output_path(path, flag, {".json", ".csv", ".ply", ".png", ".svg", ".obj", ".mesh.ply", ".gltf", ".glb"});
+}
+
+std::string describe_scene(const tessera::Scene& scene) {
+    size_t triangles = 0;
+    double worst = 0.0;
+    for (const tessera::SceneInstance& inst : scene.instances) {
+        triangles += scene.meshes[inst.mesh].triangles.size();
+        worst = std::max(worst, inst.fit_error);
+    }
+    return std::to_string(scene.instances.size()) + " instances, " + std::to_string(scene.meshes.size()) +
+           " meshes, " + std::to_string(triangles) + " triangles, max rigid fit error " + format_number(worst);
+}
+
 std::string format_number(double value) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%g", value);

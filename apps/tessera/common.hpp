@@ -57,6 +57,29 @@ std::string extension_of(const std::string& path);
 void check_output_path(const std::string& path, const std::string& flag,
                        std::initializer_list<const char*> allowed);
 
+// The -o of synth and edit: data (.json, .csv, .ply), pictures (.png, .svg) or
+// scenes of the elements' geometry (.obj, .mesh.ply, .gltf, .glb); checked up front
+// like check_output_path.
+void check_arrangement_output(const std::string& path, const std::string& flag);
+
+// One line about a scene: instances, meshes, triangles and the largest rigid fit error.
+std::string describe_scene(const tessera::Scene& scene);
+
+// Writes `data` (an Exemplar or an Arrangement) by the extension of `path`: a scene path
+// gets the elements' geometry (tessera::build_scene + write_scene; mesh paths as loaded,
+// relative to the working directory) and returns describe_scene; anything else goes to
+// tessera::save and returns "".
+template <class Data>
+std::string write_arrangement(const Data& data, const std::string& path) {
+    if (!tessera::is_scene_path(path)) {
+        tessera::save(data, path);
+        return "";
+    }
+    const tessera::Scene scene = tessera::build_scene(data);
+    tessera::write_scene(scene, path);
+    return describe_scene(scene);
+}
+
 // Formats a double compactly for messages ("%g").
 std::string format_number(double value);
 
@@ -70,5 +93,6 @@ Subcommand add_synth_command(CLI::App& app);
 Subcommand add_metrics_command(CLI::App& app);
 Subcommand add_render_command(CLI::App& app);
 Subcommand add_edit_command(CLI::App& app);
+Subcommand add_scene_command(CLI::App& app);
 
 }  // namespace tessera_cli

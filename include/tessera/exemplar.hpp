@@ -70,7 +70,8 @@ struct Exemplar {
     bool has_multi_sample_elements() const;
     // Throws Error(input) naming `source` if the data break the model's invariants:
     // no elements, non-finite coordinates, bad indices, radius < 0, unknown types,
-    // elements of one type with different sample counts.
+    // elements of one type with different sample counts, a type's reference layout
+    // that is not finite or whose size differs from its elements' sample count.
     void validate(const std::string& source) const;
 };
 

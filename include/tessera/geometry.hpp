@@ -11,18 +11,31 @@
 //   in that local frame. When a type gives none, it is taken from the first element of
 //   the type in the data (its samples brought back by the inverse of its pose).
 // - Rigid types: the pose of an output element is the best-fit rotation and translation
-//   (Kabsch) of the reference layout onto its samples; the mesh is instanced with it.
+//   (Kabsch) of the reference layout, scaled by the element's scale, onto its samples;
+//   the mesh is instanced with it. When the element's own orientation fits as well (up
+//   to rounding), it is kept, so data built consistently keep their pose exactly and a
+//   twist that the samples leave free (samples on a line) comes from the element.
+//   Single-sample elements are placed by their own pose.
 // - Deformable types (rigid = false, spaghetti, bags): every mesh vertex follows the
 //   samples by a smooth deformation: each sample gets the best-fit rotation of its
-//   neighbouring samples (reference -> output), and a vertex moves with the Gaussian-
-//   weighted blend of the samples' rigid motions (linear blend skinning with weights by
-//   distance to the reference samples). The result is a mesh of its own per element.
+//   neighbouring samples (reference -> output; a Kabsch fit of all samples weighted by
+//   the same Gaussian, which also gives the motion's translation), and a vertex moves
+//   with the Gaussian-weighted blend of the samples' rigid motions (linear blend
+//   skinning with weights by distance to the reference samples; Gaussian width =
+//   deform_falloff x the mean distance between consecutive reference samples). Small
+//   per-sample translations are added so that the blend passes through the samples
+//   (at an element's ends the one-sided neighbourhoods would miss them). What the
+//   samples leave free (the turn of a single sample, the twist about a straight line of
+//   samples) comes from the element's orientation. The result is a mesh of its own per
+//   element.
 // - Types without a mesh get a default shape: an icosphere of the element radius for
 //   single-sample elements, a tube through the samples for multi-sample elements (the
-//   radius, or a width derived from the spacing when the radius is 0).
+//   radius). Without a radius, spheres get 0.5 and tubes 0.2 x the mean nearest-neighbour
+//   distance between element centroids.
 // 2D data are placed in the plane z = 0; their meshes are 3D (rotated about z).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -46,12 +59,15 @@ struct GeometryOptions {
 
 struct SceneInstance {
     int element = -1;   // index into the data's elements
+    std::uint64_t id = 0;  // that element's stable id (Element::id); written scenes name nodes by it
     int type = 0;       // index into Scene::type_names
     int mesh = 0;       // index into Scene::meshes
     // true: the mesh is the type's shared mesh, placed by the pose below;
     // false: the mesh is this element's own, already in world coordinates (deformed
     // meshes and default shapes), and the pose is informational.
     bool instanced = false;
+    // Where the mesh's local origin lands: the samples' centroid when the reference
+    // layout is centred (derived layouts are).
     Vec3 position;
     Quat orientation;
     double scale = 1.0;
@@ -64,7 +80,8 @@ struct Scene {
     std::vector<TriangleMesh> meshes;
     std::vector<SceneInstance> instances;  // one per element, in element order
 
-    // The world-space mesh of instance i (its pose applied when instanced).
+    // The world-space mesh of instance i (its pose applied when instanced); Error(option)
+    // for an index out of range.
     TriangleMesh world_mesh(int instance) const;
     // All instances in world space as one mesh; when `triangle_instance` is given it
     // receives the instance index of every triangle.

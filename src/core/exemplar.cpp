@@ -90,6 +90,15 @@ void Exemplar::validate(const std::string& source) const {
                  std::to_string(c) + " and " + std::to_string(e.sample_count) + ")");
     }
     if (expected_first != static_cast<int>(samples.size())) fail("samples do not match the elements' sample runs");
+    // A reference layout (geometry.hpp) places each of the type's samples in the mesh's frame.
+    for (size_t t = 0; t < types.size(); ++t) {
+        const auto& reference = types[t].reference;
+        for (const Vec3& r : reference)
+            if (!is_finite(r)) fail("element type '" + types[t].name + "' has a reference point that is NaN or infinite");
+        if (!reference.empty() && count_of_type[t] >= 0 && count_of_type[t] != static_cast<int>(reference.size()))
+            fail("element type '" + types[t].name + "' has a reference layout of " + std::to_string(reference.size()) +
+                 " samples but its elements have " + std::to_string(count_of_type[t]));
+    }
     for (size_t i = 0; i < samples.size(); ++i) {
         const auto& s = samples[i];
         if (!is_finite(s.p)) fail("sample " + std::to_string(i) + " has a coordinate that is NaN or infinite");

@@ -4,6 +4,7 @@
 // voted for.
 #pragma once
 
+#include "core/rigid_fit.hpp"
 #include "det/model.hpp"
 
 namespace tessera::det {
@@ -25,9 +26,8 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
 // at the end of synthesis so the result lies in the domain).
 void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension);
 
-// Best rigid motion (rotation R, translation t) minimising sum |R a_k + t - b_k|^2
-// (Kabsch; no reflections; rotation about z only when dimension == 2).
-void best_rigid_fit(const Vec3* a, const Vec3* b, int n, int dimension, Quat& rotation, Vec3& translation);
+// Best rigid motion (Kabsch), shared with element geometry: core/rigid_fit.hpp.
+using core::best_rigid_fit;
 
 // Re-derives each element's pose (position = centroid; orientation of rigid
 // multi-sample elements from their fit to the source element's layout).

@@ -4,11 +4,13 @@
 // "FILE:LINE: what" error builder. Private to src/io/.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "tessera/error.hpp"
+#include "tessera/exemplar.hpp"
 #include "tessera/vec.hpp"
 
 namespace tessera::io_detail {
@@ -36,6 +38,11 @@ std::string format_number(double value);
 // rotation by `angle`, or the identity. Returns the problem as text, or nothing.
 std::optional<std::string> resolve_orientation(std::optional<Quat> q, std::optional<double> angle,
                                                int dimension, Quat& result);
+
+// to_json, with every type's non-empty mesh path passed through `mesh_path` (save()
+// rewrites them relative to the file it writes; to_json itself keeps them as they are).
+std::string to_json_with_mesh_paths(const Exemplar& data, const RunStats* stats,
+                                    const std::function<std::string(const std::string&)>& mesh_path);
 
 // "source:line: what" (line > 0) or "source: what".
 std::string located(const std::string& source, int line, const std::string& what);

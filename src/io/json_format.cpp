@@ -245,7 +245,7 @@ private:
             const std::string where = "types[" + std::to_string(i) + "]";
             const Json& t = types[i];
             if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
-            check_keys(t, {"name", "rigid", "floor", "mesh"}, where);
+            check_keys(t, {"name", "rigid", "floor", "mesh", "reference"}, where);
             ElementType type;
             type.name = string(require(t, "name", where), member(where, "name"));
             if (type.name.empty()) fail(member(where, "name"), "must not be empty");
@@ -254,6 +254,14 @@ private:
             if (t.contains("rigid")) type.rigid = boolean(t["rigid"], member(where, "rigid"));
             if (t.contains("floor")) type.floor = boolean(t["floor"], member(where, "floor"));
             if (t.contains("mesh")) type.mesh = string(t["mesh"], member(where, "mesh"));
+            if (t.contains("reference")) {
+                // The samples' places in the mesh's frame (geometry.hpp); the count is
+                // checked against the type's elements by Exemplar::validate.
+                const std::string at = member(where, "reference");
+                const Json& points = array(t["reference"], at);
+                for (size_t k = 0; k < points.size(); ++k)
+                    type.reference.push_back(point(points[k], at + "[" + std::to_string(k) + "]"));
+            }
             ex.types.push_back(std::move(type));
         }
     }
@@ -527,12 +535,24 @@ Domain load_domain_json(const std::string& path, int dimension) {
 }
 
 std::string to_json(const Exemplar& data, const RunStats* stats) {
+    return to_json_with_mesh_paths(data, stats, [](const std::string& mesh) { return mesh; });
+}
+
+std::string io_detail::to_json_with_mesh_paths(const Exemplar& data, const RunStats* stats,
+                                               const std::function<std::string(const std::string&)>& mesh_path) {
     const OrderedJson domain = domain_json(data.domain, data.dimension);
 
     std::vector<OrderedJson> types;
-    for (const auto& t : data.types)
-        types.push_back(
-            OrderedJson{{"name", t.name}, {"rigid", t.rigid}, {"floor", t.floor}, {"mesh", t.mesh}});
+    for (const auto& t : data.types) {
+        OrderedJson type{{"name", t.name}, {"rigid", t.rigid}, {"floor", t.floor},
+                         {"mesh", t.mesh.empty() ? t.mesh : mesh_path(t.mesh)}};
+        if (!t.reference.empty()) {
+            OrderedJson reference = OrderedJson::array();
+            for (const Vec3& p : t.reference) reference.push_back(point_json(p, data.dimension));
+            type["reference"] = std::move(reference);
+        }
+        types.push_back(std::move(type));
+    }
     std::vector<OrderedJson> elements;
     elements.reserve(data.elements.size());
     for (const auto& e : data.elements) elements.push_back(element_json(data, e));

@@ -94,6 +94,35 @@ TEST_F(IoFiles, SaveAndLoadJsonAndCsv) {
     EXPECT_TRUE(temporary_files().empty());
 }
 
+// Type meshes are named relative to the JSON file in the file and relative to the
+// working directory in memory, so load(save(x)) finds the same mesh from anywhere.
+TEST_F(IoFiles, MeshPathsAreRelativeToTheJsonFile) {
+    fs::create_directories(dir_ / "meshes");
+    fs::create_directories(dir_ / "out");
+    write("meshes/rock.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    write("in.json", R"({"format": "tessera", "version": 1, "dimension": 2,
+        "domain": {"type": "box", "min": [0, 0], "max": [4, 4]},
+        "types": [{"name": "rock", "mesh": "meshes/rock.obj"}, {"name": "plain"}],
+        "elements": [{"type": "rock", "position": [1, 1]}, {"type": "plain", "position": [2, 2]}]})");
+    const Exemplar in = load(path("in.json"));
+    EXPECT_TRUE(fs::equivalent(in.types[0].mesh, path("meshes/rock.obj"))) << in.types[0].mesh;
+    EXPECT_EQ(in.types[1].mesh, "");
+
+    save(in, path("out/again.json"));
+    EXPECT_NE(read_file(path("out/again.json")).find(R"("mesh":"../meshes/rock.obj")"), std::string::npos)
+        << read_file(path("out/again.json"));
+    const Exemplar again = load(path("out/again.json"));
+    EXPECT_TRUE(fs::equivalent(again.types[0].mesh, path("meshes/rock.obj"))) << again.types[0].mesh;
+
+    // A mesh that shares no directory with the file but the root keeps its absolute path;
+    // to_json writes paths as they are.
+    Exemplar elsewhere = in;
+    elsewhere.types[0].mesh = "/nonexistent-tessera-dir/rock.obj";
+    save(elsewhere, path("out/abs.json"));
+    EXPECT_EQ(load(path("out/abs.json")).types[0].mesh, elsewhere.types[0].mesh);
+    EXPECT_NE(to_json(in).find(in.types[0].mesh), std::string::npos);
+}
+
 TEST_F(IoFiles, PicturesGoThroughTheRenderer) {
     save(small_exemplar(), path("pic.svg"));
     EXPECT_NE(read_file(path("pic.svg")).find("<svg"), std::string::npos);

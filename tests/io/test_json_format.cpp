@@ -47,6 +47,7 @@ void expect_same(const Exemplar& a, const Exemplar& b) {
         EXPECT_EQ(a.types[t].rigid, b.types[t].rigid);
         EXPECT_EQ(a.types[t].floor, b.types[t].floor);
         EXPECT_EQ(a.types[t].mesh, b.types[t].mesh);
+        EXPECT_EQ(a.types[t].reference, b.types[t].reference);
     }
     EXPECT_EQ(a.attribute_names, b.attribute_names);
     ASSERT_EQ(a.elements.size(), b.elements.size());
@@ -85,7 +86,8 @@ Exemplar rich_exemplar(int dimension) {
     ex.dimension = dimension;
     ex.domain = dimension == 2 ? Domain::box({-1, 0, 0}, {10.5, 1.0 / 3.0, 0}, 2)
                                : Domain::box({0, 0, -2}, {4, 5, 6.25}, 3);
-    ex.types.push_back({"stick", false, false, "meshes/stick.obj", {}});
+    const double rz = dimension == 3 ? 0.125 : 0.0;
+    ex.types.push_back({"stick", false, false, "meshes/stick.obj", {{-1.0 / 3.0, -0.05, -rz}, {0, 0, 0}, {1.0 / 3.0, 0.05, rz}}});
     ex.types.push_back({"pebble", true, true, "", {}});
     ex.attribute_names = {"hue", "wet ness"};
     const double z = dimension == 3 ? 0.7 : 0.0;
@@ -135,7 +137,8 @@ TEST(IoJson, WritesTheDocumentedFields) {
          {"\"format\": \"tessera\"", "\"version\": 1", "\"dimension\": 2", "\"type\":\"box\"",
           "\"min\":[-1.0,0.0]", "\"samples\":[[", "\"position\":[", "\"angle\":", "\"orientation\":[",
           "\"scale\":", "\"radius\":0.05", "\"attributes\": [\"hue\",\"wet ness\"]", "\"locked\":true",
-          "\"time\":2.75", "\"time\":[0.0,0.5,0.0]", "\"id\":1000", "\"mesh\":\"meshes/stick.obj\""})
+          "\"time\":2.75", "\"time\":[0.0,0.5,0.0]", "\"id\":1000", "\"mesh\":\"meshes/stick.obj\"",
+          "\"reference\":[[-0.3333333333333333,-0.05],[0.0,0.0],[0.3333333333333333,0.05]]"})
         EXPECT_NE(text.find(fragment), std::string::npos) << fragment << "\n" << text;
     EXPECT_EQ(text.find("\"stats\""), std::string::npos);
 }
@@ -307,4 +310,24 @@ TEST(IoJson, RejectsBadTypesAndAttributes) {
                       "elements[0].attributes: must be an array of 0");
     expect_json_error(doc2d(R"({"position": [1, 2]})", R"("extra": 1,)"), ErrorKind::input,
                       "unknown key 'extra'");
+}
+
+TEST(IoJson, TypeReferenceLayout) {
+    const std::string types = R"("types": [{"name": "s", "mesh": "s.obj", "reference": [[-1, 0], [1, 0]]}],)";
+    const Exemplar ex = parse_json(doc2d(R"({"samples": [[1, 2], [3, 2]]})", types), "r.json");
+    ASSERT_EQ(ex.types[0].reference.size(), 2u);
+    EXPECT_EQ(ex.types[0].reference[1], Vec3(1, 0, 0));
+    // A type without one writes no "reference" key.
+    EXPECT_EQ(to_json(parse_json(doc2d(R"({"position": [1, 2]})"), "r.json")).find("reference"), std::string::npos);
+
+    const auto with_reference = [](const std::string& reference) {
+        return doc2d(R"({"samples": [[1, 2], [3, 2]]})",
+                     R"("types": [{"name": "s", "reference": )" + reference + "}],");
+    };
+    expect_json_error(with_reference("[[0, 0], [1, 0], [2, 0]]"), ErrorKind::input,
+                      "element type 's' has a reference layout of 3 samples but its elements have 2");
+    expect_json_error(with_reference("[[0, 0, 0], [1, 0, 0]]"), ErrorKind::input,
+                      "types[0].reference[0]: must be an array of 2 numbers");
+    expect_json_error(with_reference(R"([[0, 0], [1, "x"]])"), ErrorKind::input, "types[0].reference[1]");
+    expect_json_error(with_reference(R"({"a": 1})"), ErrorKind::input, "types[0].reference: must be an array");
 }
