@@ -64,6 +64,56 @@ std::vector<double> closest_type_pairs(const Exemplar& exemplar, const std::vect
     return closest;
 }
 
+// Axes along which the exemplar is a thin layer: thinner than one neighbourhood
+// diameter (2 x radius). Such an exemplar cannot offer a cubic window of patch size.
+struct LayerAxes {
+    bool thin[3] = {false, false, false};
+    bool any = false;
+};
+
+LayerAxes layer_axes(const Box& in_box, int dim, double radius) {
+    LayerAxes layer;
+    int thin_count = 0;
+    for (int k = 0; k < dim; ++k) {
+        layer.thin[k] = in_box.hi[k] - in_box.lo[k] < 2.0 * radius;
+        thin_count += layer.thin[k];
+    }
+    if (thin_count == dim) return {};  // a tiny exemplar, not a layer: the usual windows
+    layer.any = thin_count > 0;
+    return layer;
+}
+
+// Slides a cell's window centre along each thin axis (turned by the local frame) to the
+// middle of the nearest run of domain inside that line, within +-patch: the layer then
+// lands in the domain (a shell under a surface) instead of wherever the cell's centre is.
+Vec3 onto_layer(const Vec3& center, const Quat& rotation, const LayerAxes& layer, const Box& in_box,
+                const Domain& domain, double patch, int dim) {
+    Vec3 out = center;
+    for (int k = 0; k < dim; ++k) {
+        if (!layer.thin[k]) continue;
+        Vec3 axis;
+        axis[k] = 1.0;
+        const Vec3 dir = rotation.rotate(axis);
+        const double step = std::max(0.25 * (in_box.hi[k] - in_box.lo[k]), patch / 64.0);
+        const int steps = static_cast<int>(std::ceil(patch / step));  // bounded: <= 64 each way
+        // The inside run nearest to t = 0, searched outward.
+        int first = 1, last = 0;  // empty
+        for (int r = 0; r <= steps && first > last; ++r)
+            for (int sign : {1, -1}) {
+                const int t = sign * r;
+                if (domain.inside(out + dir * (t * step))) {
+                    first = last = t;
+                    break;
+                }
+            }
+        if (first > last) continue;  // no domain on this line: leave the centre
+        while (first - 1 >= -steps && domain.inside(out + dir * ((first - 1) * step))) --first;
+        while (last + 1 <= steps && domain.inside(out + dir * ((last + 1) * step))) ++last;
+        out = out + dir * (0.5 * (first + last) * step);
+    }
+    return out;
+}
+
 // Where a patch goes: the window around in_center is laid down around out_center,
 // turned by the local frame of the orientation field there (Eq. 7).
 struct PatchMap {
@@ -105,10 +155,26 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
     const int dim = params.dimension;
     const Box in_box = exemplar.domain.bounds();
     const Box out_box = domain.bounds();
+    // A layered exemplar (a wall one brick thick, a sheet) is thinner than a neighbourhood
+    // along some axis. Such thin axes do not limit the patch size: the window spans the
+    // whole layer along them, and each output cell's window is slid along the (field-
+    // turned) thin axis onto the domain, so a shell under a surface receives one layer.
+    const LayerAxes layer = layer_axes(in_box, dim, params.radius);
     double min_extent = INFINITY;
-    for (int k = 0; k < dim; ++k) min_extent = std::min(min_extent, in_box.hi[k] - in_box.lo[k]);
+    for (int k = 0; k < dim; ++k)
+        if (!layer.thin[k]) min_extent = std::min(min_extent, in_box.hi[k] - in_box.lo[k]);
+    if (!std::isfinite(min_extent)) min_extent = 2.0 * params.radius;
     double patch = options.patch_size > 0.0 ? options.patch_size : std::min(2.0 * params.radius, 0.5 * min_extent);
     patch = std::min(patch, min_extent);
+    // Window extent per axis: the patch, the whole layer along thin axes, and with thin
+    // axes a diagonal's worth in-plane, since a turned layer crosses an axis-aligned
+    // output cell along up to sqrt(dim) times its side.
+    Vec3 window_size;
+    for (int k = 0; k < dim; ++k) {
+        const double extent = in_box.hi[k] - in_box.lo[k];
+        window_size[k] = layer.thin[k] ? extent : std::min(extent, layer.any ? patch * std::sqrt(double(dim)) : patch);
+    }
+    const double window_reach = 0.5 * norm(window_size);  // centre to corner
 
     CellGrid cells;
     cells.lo = out_box.lo;
@@ -154,11 +220,13 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
     const core::KeyedRng rng(options.seed, core::Purpose::patch_choice);
 
     const Vec3 half = Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5;
+    const Vec3 window_half = window_size * 0.5;
     for (int c = 0; c < cells.count(); ++c) {
         const Vec3 clo = cells.cell_lo(c);
         PatchMap map;
         map.out_center = clo + half;
         map.rotation = params.field.frame(map.out_center, dim);
+        if (layer.any) map.out_center = onto_layer(map.out_center, map.rotation, layer, in_box, domain, patch, dim);
         // Output elements already placed in the band around this cell.
         std::vector<int> band_elements;
         for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
@@ -195,7 +263,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
         for (int j = 0; j < tries; ++j) {
             Vec3 origin = in_box.lo;
             for (int k = 0; k < dim; ++k) {
-                const double span = (in_box.hi[k] - in_box.lo[k]) - patch;
+                const double span = (in_box.hi[k] - in_box.lo[k]) - window_size[k];
                 origin[k] += span > 0.0 ? span * rng.uniform(static_cast<std::uint64_t>(c) * 64 * 3 + j * 3 + k) : 0.0;
                 // With floor constraints the exemplar's sides are physical (a floor, walls): a
                 // cell on a side of the output's bounds takes its window flush with the same
@@ -209,7 +277,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                     if (flush >= in_box.lo[k]) origin[k] = flush;
                 }
             }
-            map.in_center = origin + half;
+            map.in_center = origin + window_half;
             double score = 0.0;
             // Placed output elements should find an input element of their type where they sit.
             for (int e : band_elements) {
@@ -221,7 +289,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                 score += d2;
             }
             // Input elements that would land in already placed cells should find a placed element.
-            in_grid.for_each_within(map.in_center, (0.5 * patch + band) * std::sqrt(static_cast<double>(dim)),
+            in_grid.for_each_within(map.in_center, window_reach + band * std::sqrt(static_cast<double>(dim)),
                                     [&](int i, double) {
                 const Vec3 q = map.to_output(in_centers[i]);
                 bool in_band = true, in_cell = true;
@@ -248,8 +316,13 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
         // Copy whole elements whose centroid lies in the chosen window (and in the domain).
         map.in_center = best_center;
         window.clear();
-        in_grid.for_each_within(map.in_center, 0.5 * patch * std::sqrt(static_cast<double>(dim)) + 1e-12,
-                                [&](int i, double) { window.push_back(i); });
+        in_grid.for_each_within(map.in_center, window_reach + 1e-12, [&](int i, double) {
+            // Only the window itself (a box), not the whole ball around it.
+            bool in_window = true;
+            for (int k = 0; k < dim; ++k)
+                in_window = in_window && std::abs(in_centers[i][k] - map.in_center[k]) <= window_half[k] + 1e-12;
+            if (in_window) window.push_back(i);
+        });
         std::sort(window.begin(), window.end());
         for (int i : window) {
             const Vec3 q = map.to_output(in_centers[i]);
