@@ -3,6 +3,8 @@
 // as PLY / OBJ (with and without faces); the frame with a normal; determinism across
 // threads; a synthesis run steered by a grid field.
 #include <gtest/gtest.h>
+
+#include "test_meshes.hpp"
 #include <unistd.h>
 
 #include <array>
@@ -79,36 +81,7 @@ void expect_error(Fn&& fn, const std::vector<std::string>& parts, ErrorKind kind
     }
 }
 
-// Unit icosphere (outward, counter-clockwise), `levels` subdivisions: 20 * 4^levels triangles.
-TriangleMesh icosphere(int levels) {
-    const double t = (1 + std::sqrt(5.0)) / 2;
-    TriangleMesh m;
-    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    for (Vec3& v : m.vertices) v = v * (1.0 / norm(v));
-    m.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<int, int>, int> mid;
-        auto midpoint = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            const Vec3 v = (m.vertices[a] + m.vertices[b]) * 0.5;
-            m.vertices.push_back(v * (1.0 / norm(v)));
-            return mid[key] = int(m.vertices.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> next;
-        for (const auto& f : m.triangles) {
-            const int a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
-            next.push_back({f[0], a, c}), next.push_back({f[1], b, a}), next.push_back({f[2], c, b});
-            next.push_back({a, b, c});
-        }
-        m.triangles = next;
-    }
-    return m;
-}
+using test::icosphere;
 
 // Along the line of latitude through p (relative to the sphere's centre), eastward.
 Vec3 latitude_tangent(const Vec3& r) {

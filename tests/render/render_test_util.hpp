@@ -2,6 +2,8 @@
 // Debian's libstb), compare colours, build an icosphere.
 #pragma once
 
+#include "test_meshes.hpp"
+
 #include <stb_image.h>
 
 #include <algorithm>
@@ -51,33 +53,6 @@ inline int color_distance(render::Rgb a, render::Rgb b) {
         std::lround(255.0 * std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)})));
 }
 
-// An icosahedron centred on the origin, each triangle split into four `subdivisions`
-// times with the new vertices pushed out to the sphere; outward counter-clockwise.
-inline TriangleMesh icosphere(int subdivisions, double radius) {
-    const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-    TriangleMesh m;
-    m.vertices = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
-                  {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
-    m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int s = 0; s < subdivisions; ++s) {
-        std::map<std::pair<int, int>, int> middle;
-        auto mid = [&](int a, int b) {
-            const auto key = std::minmax(a, b);
-            if (const auto it = middle.find(key); it != middle.end()) return it->second;
-            m.vertices.push_back((m.vertices[a] + m.vertices[b]) * 0.5);
-            return middle[key] = static_cast<int>(m.vertices.size()) - 1;
-        };
-        std::vector<std::array<int, 3>> finer;
-        for (const auto& [a, b, c] : m.triangles) {
-            const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
-            finer.insert(finer.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
-        }
-        m.triangles = std::move(finer);
-    }
-    for (Vec3& v : m.vertices) v = v * (radius / std::sqrt(dot(v, v)));
-    return m;
-}
+// icosphere(levels, radius) comes from tests/test_meshes.hpp (same namespace).
 
 }  // namespace tessera::test
