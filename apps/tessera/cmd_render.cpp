@@ -10,7 +10,7 @@ namespace tessera_cli {
 namespace {
 
 struct RenderArgs {
-    std::string input, output, input_domain;
+    std::string input, output, input_domain, meshes = "auto";
     bool no_domain = false, no_samples = false, quiet = false;
     tessera::RenderOptions render;
 };
@@ -22,6 +22,7 @@ void run_render(RenderArgs& args) {
     const tessera::Exemplar data = load_input(args.input, args.input_domain);
     args.render.show_domain = !args.no_domain;
     args.render.show_samples = !args.no_samples;
+    args.render.meshes = parse_meshes_option(args.meshes);
     try {
         tessera::render_to_file(data, args.output, args.render);
     } catch (const tessera::Error& e) {
@@ -48,6 +49,7 @@ Subcommand add_render_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("--no-domain", args->no_domain, "Do not draw the domain outline.");
     cmd->add_flag("--no-samples", args->no_samples, "Do not mark the samples of multi-sample elements.");
+    add_meshes_option(*cmd, args->meshes);
     add_input_domain_option(*cmd, args->input_domain, "FILE");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { run_render(*args); }};

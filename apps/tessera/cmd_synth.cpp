@@ -3,6 +3,7 @@
 // the DetOptions given as flags of the same names, prints progress to stderr, and
 // writes the output (data, a picture, or a scene of the elements' geometry) and an
 // optional --preview picture.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -35,7 +36,7 @@ const char* to_string(tessera::SearchMode s) {
 }
 
 struct SynthArgs {
-    std::string input, output, preview, input_domain, domain, field, gravity;
+    std::string input, output, preview, input_domain, domain, field, gravity, meshes = "auto";
     double scale = 2.0;
     std::string method = "det";
     std::string search, matching;
@@ -263,11 +264,16 @@ void run_synth(SynthArgs& args) {
     if (args.domain_option->count() > 0) spec = parse_domain_spec(args.domain);
     check_arrangement_output(args.output, "-o");
     if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
+    tessera::RenderOptions preview_options;
+    preview_options.meshes = parse_meshes_option(args.meshes);
 
     const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
     // A scene output needs the types' meshes and reference layouts: check them (by
     // building the exemplar's scene) before the synthesis rather than after it.
-    if (tessera::is_scene_path(args.output)) tessera::build_scene(exemplar);
+    const bool preview_meshes =
+        !args.preview.empty() && preview_options.meshes != tessera::RenderOptions::Meshes::off &&
+        std::any_of(exemplar.types.begin(), exemplar.types.end(), [](const auto& t) { return !t.mesh.empty(); });
+    if (tessera::is_scene_path(args.output) || preview_meshes) tessera::build_scene(exemplar);
     const tessera::Domain domain = output_domain(args, spec, exemplar);
     if (!args.quiet && !domain.notes().empty()) std::cerr << "synth: note: " << domain.notes() << std::endl;
     if (!args.field.empty()) args.det.field = tessera::OrientationField::parse(args.field, exemplar.dimension, "--field");
@@ -301,7 +307,7 @@ void run_synth(SynthArgs& args) {
     std::signal(SIGINT, SIG_DFL);
 
     // The preview goes first: when OUTPUT exists, the whole command succeeded.
-    if (!args.preview.empty()) tessera::render_to_file(result, args.preview);
+    if (!args.preview.empty()) tessera::render_to_file(result, args.preview, preview_options);
     const std::string scene = write_arrangement(result, args.output);
     if (!args.quiet) {
         char line[256];
@@ -352,7 +358,10 @@ Subcommand add_synth_command(CLI::App& app) {
                "--domain", args->domain,
                "Output domain: box:W,H (2D) or box:W,H,D (3D) = a box of that size from the input domain's "
                "lower corner; box:xmin,ymin,xmax,ymax or box:xmin,ymin,xmax,ymax,zmin,zmax = explicit "
-               "corners. Its dimension must be the input's.")
+               "corners; polygon:FILE.json or polygon:x1,y1,x2,y2,... (2D, holes in the file form); "
+               "mask:FILE.png[@xmin,ymin,xmax,ymax] (2D, white = inside); mesh:FILE[,resolution] (3D closed "
+               "OBJ/PLY mesh); shell:FILE,thickness[,resolution] (3D band under a mesh surface). Its "
+               "dimension must be the input's.")
             ->type_name("SPEC");
     args->scale_option->excludes(args->domain_option);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
@@ -361,6 +370,7 @@ Subcommand add_synth_command(CLI::App& app) {
            "Also write a picture of the output (.png or .svg, 800 pixels wide). It is written before "
            "OUTPUT, so an existing OUTPUT means the whole command succeeded.")
         ->type_name("FILE");
+    add_meshes_option(*cmd, args->meshes);
     cmd->add_option("--method", args->method,
                     "Synthesis method: det (neighbourhood matching, the only one so far).")
         ->capture_default_str();

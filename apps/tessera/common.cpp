@@ -60,6 +60,23 @@ CLI::Option* add_quiet_option(CLI::App& app, bool& quiet) {
     return app.add_flag("-q,--quiet", quiet, "Print nothing to stderr except errors.");
 }
 
+CLI::Option* add_meshes_option(CLI::App& app, std::string& text) {
+    return app
+        .add_option("--meshes", text,
+                    "Draw element meshes in PNG pictures: auto = when some element type has a mesh "
+                    "file, on = always (types without one as spheres and tubes), off = disks and "
+                    "spheres.")
+        ->type_name("auto|on|off")
+        ->capture_default_str();
+}
+
+tessera::RenderOptions::Meshes parse_meshes_option(const std::string& text) {
+    if (text == "auto") return tessera::RenderOptions::Meshes::automatic;
+    if (text == "on") return tessera::RenderOptions::Meshes::on;
+    if (text == "off") return tessera::RenderOptions::Meshes::off;
+    fail_option("--meshes must be auto, on or off, got '" + text + "'");
+}
+
 CLI::Option* add_threads_option(CLI::App& app, int& threads) {
     return app
         .add_option("--threads", threads,

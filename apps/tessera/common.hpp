@@ -40,6 +40,10 @@ CLI::Option* add_input_domain_option(CLI::App& app, std::string& text, const std
 CLI::Option* add_quiet_option(CLI::App& app, bool& quiet);
 CLI::Option* add_threads_option(CLI::App& app, int& threads);
 CLI::Option* add_seed_option(CLI::App& app, std::uint64_t& seed);
+// --meshes auto|on|off: draw element meshes in PNG pictures (RenderOptions::meshes).
+CLI::Option* add_meshes_option(CLI::App& app, std::string& text);
+// The value of --meshes; fails with an option error naming the flag for another value.
+tessera::RenderOptions::Meshes parse_meshes_option(const std::string& text);
 
 // Loads an exemplar or arrangement from .json or .csv. A non-empty
 // `input_domain_text` ("xmin,ymin,xmax,ymax[,zmin,zmax]", the value of the option

@@ -38,7 +38,10 @@ std::string render_svg(const Exemplar& data, const RenderOptions& options = {});
 // Throws Error(input) for data render_png cannot draw or an instance naming a mesh
 // the scene does not have, Error(option) for a bad width.
 std::string render_scene_png(const Exemplar& data, const Scene& scene, const RenderOptions& options = {});
-// Writes .png or .svg by extension, atomically. Throws Error(option) for another extension.
+// Writes .png or .svg by extension, atomically. A .png shows the element meshes
+// (build_scene, render_scene_png) when options.meshes is on, or automatic and some type
+// has a mesh; a .svg always draws disks and polylines (meshes = on is then an option
+// error). Throws Error(option) for another extension, and what build_scene throws.
 void render_to_file(const Exemplar& data, const std::string& path, const RenderOptions& options = {});
 
 }  // namespace tessera
