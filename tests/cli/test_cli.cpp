@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <stb_image_write.h>
+
 #include "tessera/tessera.hpp"
 
 namespace fs = std::filesystem;
@@ -174,6 +176,86 @@ TEST_F(CliSynth, DomainBySize) {
     EXPECT_DOUBLE_EQ(box.hi.y, 10.0);
     expect_count_near(output.elements.size(), input.elements.size() * 1.5);
     for (const auto& e : output.elements) EXPECT_TRUE(output.domain.inside(e.position));
+}
+
+// Shaped domains from the command line: every form of --domain, the output's domain is
+// the shape (saved in the JSON) and the elements lie inside it.
+void expect_inside(const tessera::Exemplar& output) {
+    int outside = 0;
+    for (const auto& s : output.samples) outside += !output.domain.inside(s.p);
+    EXPECT_LE(outside, static_cast<int>(output.samples.size() / 100));
+}
+
+TEST_F(CliSynth, DomainPolygonInlineAndFromFile) {
+    Result r = run("synth " + q(example("poisson_disk_2d.json")) + " -o " + q(path("tri.json")) +
+                   " --domain polygon:0,0,20,0,0,20 --iterations 2 --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    tessera::Exemplar out = tessera::load(path("tri.json"));
+    EXPECT_EQ(out.domain.kind(), tessera::Domain::Kind::polygon);
+    EXPECT_NEAR(out.domain.measure(), 200.0, 1e-9);
+    expect_count_near(out.elements.size(), 110 * 2.0);
+    expect_inside(out);
+    r = run("synth " + q(example("poisson_disk_2d.json")) + " -o " + q(path("ring.json")) + " --domain polygon:" +
+            q(example("domain_disk_with_hole.json")) + " --iterations 2 --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    out = tessera::load(path("ring.json"));
+    expect_inside(out);
+    for (const auto& e : out.elements) EXPECT_GT(tessera::norm(e.position - tessera::Vec3{15, 15, 0}), 3.0);
+}
+
+TEST_F(CliSynth, DomainMeshAndShell) {
+    Result r = run("synth " + q(example("spheres_3d.json")) + " -o " + q(path("blob.json")) + " --domain mesh:" +
+                   q(example("blob.obj") + ",48") + " --iterations 1 --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    tessera::Exemplar out = tessera::load(path("blob.json"));
+    EXPECT_EQ(out.domain.kind(), tessera::Domain::Kind::mesh);
+    expect_inside(out);
+    r = run("synth " + q(example("spheres_3d.json")) + " -o " + q(path("shell.json")) + " --domain shell:" +
+            q(example("blob.obj") + ",1.5,48") + " --iterations 1 --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    out = tessera::load(path("shell.json"));
+    EXPECT_EQ(out.domain.kind(), tessera::Domain::Kind::shell);
+    expect_inside(out);
+    // Nothing deep inside the blob (centre (6, 6, 6), radius about 6): the shell is 1.5 thick.
+    for (const auto& e : out.elements) EXPECT_GT(tessera::norm(e.position - tessera::Vec3{6, 6, 6}), 3.0);
+}
+
+TEST_F(CliSynth, DomainMaskFromPng) {
+    // A 32 x 32 mask, the left half white (inside), stretched over [0, 20] x [0, 20].
+    std::vector<unsigned char> pixels(32 * 32);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) pixels[y * 32 + x] = x < 16 ? 255 : 0;
+    ASSERT_NE(stbi_write_png(path("half.png").c_str(), 32, 32, 1, pixels.data(), 32), 0);
+    Result r = run("synth " + q(example("poisson_disk_2d.json")) + " -o " + q(path("half.json")) + " --domain mask:" +
+                   q(path("half.png") + "@0,0,20,20") + " --iterations 2 --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const tessera::Exemplar out = tessera::load(path("half.json"));
+    EXPECT_EQ(out.domain.kind(), tessera::Domain::Kind::mask);
+    expect_inside(out);
+    for (const auto& e : out.elements) EXPECT_LT(e.position.x, 10.5);
+    expect_count_near(out.elements.size(), 110 * 2.0);
+    // An all-black mask has no inside: a domain error naming the file, nothing written.
+    std::fill(pixels.begin(), pixels.end(), 0);
+    ASSERT_NE(stbi_write_png(path("black.png").c_str(), 32, 32, 1, pixels.data(), 32), 0);
+    r = run("synth " + q(example("poisson_disk_2d.json")) + " -o " + q(path("black.json")) + " --domain mask:" +
+            q(path("black.png")) + " --quiet");
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_NE(r.err.find("black.png"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("black.json")));
+}
+
+TEST_F(CliSynth, PreviewDrawsElementMeshesWhenTypesHaveThem) {
+    const std::string carrots = std::string(TESSERA_SOURCE_DIR) + "/examples/scenes/carrots_2d.json";
+    Result r = run("synth " + q(carrots) + " -o " + q(path("a.json")) + " --iterations 1 --quiet --preview " +
+                   q(path("meshes.png")));
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run("render " + q(path("a.json")) + " -o " + q(path("disks.png")) + " --meshes off --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run("render " + q(path("a.json")) + " -o " + q(path("again.png")) + " --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(is_png(path("meshes.png")));
+    EXPECT_NE(read_text(path("meshes.png")), read_text(path("disks.png")));
+    EXPECT_EQ(read_text(path("meshes.png")), read_text(path("again.png")));  // auto = meshes here
 }
 
 TEST_F(CliSynth, DomainByCorners) {
@@ -441,6 +523,10 @@ const ErrorCase error_cases[] = {
     {"render_zero_width", "", "", "render '{ex}poisson_disk_2d.json' -o '{work}/p.png' --width 0", 2, {"--width"}},
     {"render_huge_width", "", "", "render '{ex}poisson_disk_2d.json' -o '{work}/p.png' --width 100000", 2,
      {"--width"}},
+    {"render_bad_meshes", "", "", "render '{ex}poisson_disk_2d.json' -o '{work}/p.png' --meshes maybe", 2,
+     {"--meshes", "maybe"}},
+    {"render_meshes_in_svg", "", "", "render '{ex}poisson_disk_2d.json' -o '{work}/p.svg' --meshes on", 2,
+     {"p.svg", ".png"}},
     {"render_malformed_csv", "bad.csv", "x,y\n1,2\n3,4,5\n", "render '{work}/bad.csv' -o '{work}/p.png'", 3,
      {"bad.csv:3"}},
     {"field_grid_zero_vector", "grid.json",
