@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "temp_dir.hpp"
 #include "tessera/exemplar.hpp"
 #include "tessera/geometry.hpp"
 #include "tessera/mesh.hpp"
@@ -22,29 +23,9 @@ namespace geometry_test {
 using namespace tessera;
 namespace fs = std::filesystem;
 
-// A fresh directory under the system temporary directory, removed afterwards.
-class TempDir : public ::testing::Test {
+// A fresh directory per test (tests/temp_dir.hpp), plus mesh files.
+class TempDir : public tessera::test::TempDirTest {
 protected:
-    void SetUp() override {
-        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        dir_ = fs::temp_directory_path() /
-               ("tessera_geometry_test_" + std::to_string(::getpid()) + "_" + std::to_string(stamp));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    void write(const std::string& name, const std::string& content) const {
-        std::ofstream(path(name), std::ios::binary) << content;
-    }
-    std::string read(const std::string& name) const {
-        std::ifstream in(path(name), std::ios::binary);
-        std::ostringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
     // Writes `mesh` as an OBJ file and returns its path.
     std::string write_mesh(const std::string& name, const TriangleMesh& mesh) const {
         std::ostringstream out;
@@ -54,7 +35,6 @@ protected:
         write(name, out.str());
         return path(name);
     }
-    fs::path dir_;
 };
 
 // A unit quaternion from any non-zero (w, x, y, z).

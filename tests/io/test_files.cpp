@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "temp_dir.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
 
@@ -19,26 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh directory under the system temporary directory, removed afterwards.
-class IoFiles : public ::testing::Test {
+// A fresh directory per test (tests/temp_dir.hpp).
+class IoFiles : public tessera::test::TempDirTest {
 protected:
-    void SetUp() override {
-        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        dir_ = fs::temp_directory_path() /
-               ("tessera_io_test_" + std::to_string(::getpid()) + "_" + std::to_string(stamp));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    void write(const std::string& name, const std::string& content) const {
-        std::ofstream(path(name), std::ios::binary) << content;
-    }
-
     // Names of the directory's entries that look like temporary files.
     std::vector<std::string> temporary_files() const {
         std::vector<std::string> found;
@@ -47,8 +31,6 @@ protected:
                 found.push_back(entry.path().filename().string());
         return found;
     }
-
-    fs::path dir_;
 };
 
 Exemplar small_exemplar() {
