@@ -147,6 +147,35 @@ btCollisionShape* make_hull(World& w, const std::vector<Vec3>& points, const Ele
     return hull;
 }
 
+// Polygon domains (2D): every edge of the outer ring and of the holes as a wall, two
+// triangles spanning the plane's thickness, so elements come to rest against the
+// polygon, not its bounding box, and cannot fall into a hole.
+bool add_polygon_walls(World& w, const Domain& domain, const Frame& f, const PhysicsOptions& o) {
+    if (domain.kind() != Domain::Kind::polygon) return false;
+    const DomainSource src = domain.source();
+    const double reach = 2.0 * std::max(domain.bounds().size().x, domain.bounds().size().y) + 1.0;  // along z
+    auto tm = std::make_unique<btTriangleMesh>(true, false);
+    const auto point = [&](const Vec3& p, double z) {
+        const Vec3 q = src.origin + (Vec3{p.x, p.y, 0} - src.origin) * src.scale;
+        return f.to_bullet(Vec3{q.x, q.y, z});
+    };
+    const auto ring = [&](const std::vector<Vec3>& r) {
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            const Vec3& a = r[i];
+            const Vec3& b = r[(i + 1) % r.size()];
+            tm->addTriangle(point(a, -reach), point(b, -reach), point(b, reach));
+            tm->addTriangle(point(a, -reach), point(b, reach), point(a, reach));
+        }
+    };
+    ring(src.outer);
+    for (const auto& h : src.holes) ring(h);
+    if (tm->getNumTriangles() == 0) return false;
+    btCollisionShape* shape = w.keep(new btBvhTriangleMeshShape(tm.get(), true));
+    w.meshes.push_back(std::move(tm));
+    w.add_static(shape, o);
+    return true;
+}
+
 // The collision shape of one element, centred on its centroid, and its volume.
 btCollisionShape* make_shape(World& w, const Exemplar& data, const ElementShape& s, const Frame& f,
                              const physics::TypeHulls& hulls, int element, double& volume) {
@@ -290,6 +319,7 @@ PhysicsReport step_physics(Arrangement& data, const Domain& domain, const Physic
         solver.m_erp2 = btScalar(options.overlap_correction);
         add_box_walls(w, domain.bounds(), data.dimension, f, options);
         add_mesh_wall(w, domain, f, options);
+        add_polygon_walls(w, domain, f, options);
         add_bodies(w, data, shapes, f, options);
 
         std::vector<btVector3> start(n);

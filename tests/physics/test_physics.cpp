@@ -212,3 +212,23 @@ TEST(PhysicsStep, MeshDomainsCollideWithTheirSurface) {
     EXPECT_EQ(again.lost, 0);
     for (const Element& e : a.elements) EXPECT_TRUE(cube.inside(e.position));
 }
+
+TEST(PhysicsStep, PolygonEdgesAreWallsSoNothingFallsIntoAHole) {
+    // A 10 x 10 square with a square hole [4, 6] x [2, 4]; a disk dropped above the hole
+    // comes to rest on the hole's upper edge (y = 4), not on the bounding box's floor.
+    const Domain domain = Domain::polygon({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}},
+                                          {{{4, 2, 0}, {4, 4, 0}, {6, 4, 0}, {6, 2, 0}}});
+    Arrangement a;
+    a.dimension = 2;
+    a.domain = domain;
+    a.type_index("disk");
+    a.add_element(0, {{5, 5, 0}}, 0.4);
+    a.add_element(0, {{8, 5, 0}}, 0.4);  // beside the hole: falls to the floor
+    PhysicsOptions o;
+    o.substeps = 120;
+    const PhysicsReport r = step_physics(a, domain, o);
+    EXPECT_NEAR(a.samples[0].p.y, 4.4, 0.05);
+    EXPECT_NEAR(a.samples[1].p.y, 0.4, 0.05);
+    EXPECT_EQ(r.lost, 0);
+    EXPECT_EQ(r.floating, 0);
+}
