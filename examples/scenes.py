@@ -81,6 +81,43 @@ class Placer:
             self.grid.setdefault(k, []).append((p, radius))
 
 
+class Depositor:
+    """Random sequential deposition on a floor at z = 0 (periodic in x and y): each new
+    element is dropped straight down until one of its samples (a ball of its radius)
+    touches the floor or an element already there, so the pile is settled and every
+    element rests on something, as food in a dish does."""
+
+    def __init__(self, size, cell):
+        self.size, self.cell = size, cell
+        self.n = [max(1, int(math.ceil(size[k] / cell))) for k in range(2)]
+        self.columns = {}
+
+    def _column(self, p):
+        return (int(math.floor(p[0] / self.cell)) % self.n[0], int(math.floor(p[1] / self.cell)) % self.n[1])
+
+    def drop(self, pts, radius):
+        """The samples moved down to where they come to rest (a new list)."""
+        lift = max(radius - p[2] for p in pts)  # the floor
+        for p in pts:
+            cx, cy = self._column(p)
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    for q, rq in self.columns.get(((cx + dx) % self.n[0], (cy + dy) % self.n[1]), ()):
+                        ddx = p[0] - q[0]
+                        ddy = p[1] - q[1]
+                        ddx -= self.size[0] * round(ddx / self.size[0])
+                        ddy -= self.size[1] * round(ddy / self.size[1])
+                        reach = radius + rq
+                        d2 = ddx * ddx + ddy * ddy
+                        if d2 < reach * reach:
+                            lift = max(lift, q[2] + math.sqrt(reach * reach - d2) - p[2])
+        return [[p[0], p[1], p[2] + lift] for p in pts]
+
+    def add(self, pts, radius):
+        for p in pts:
+            self.columns.setdefault(self._column(p), []).append((p, radius))
+
+
 def quat_about(axis, angle):
     s = math.sin(angle / 2)
     return [math.cos(angle / 2), axis[0] * s, axis[1] * s, axis[2] * s]
@@ -181,38 +218,37 @@ def dish_3d():
                             "bean", "a green bean, three samples long")},
     ]
     els = []
-    for _ in range(60000):
+    pile = Depositor(size, 0.5)
+    for _ in range(20000):
         kind = rng.choices(["corn", "carrot", "bean"], [0.5, 0.3, 0.2])[0]
-        c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), rng.uniform(0.15, size[2] - 0.15)]
+        c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), 0.0]
         q = quat_mul(quat_about([0, 0, 1], rng.uniform(0, 6.283)), quat_about([1, 0, 0], rng.gauss(0, 0.2)))
         if kind == "bean":
-            pts = posed(bean_ref, q, c)
-            rad = 0.11
+            pts, rad = posed(bean_ref, q, c), 0.11
         else:
             pts, rad = [c], (0.15 if kind == "corn" else 0.2)
-        if any(not (rad * 0.8 <= p[2] <= size[2] - rad * 0.8) for p in pts):
-            continue
-        if not place.fits(pts, rad):
-            continue
-        place.add(pts, rad)
+        pts = pile.drop(pts, rad)
+        if any(p[2] > size[2] - rad for p in pts):
+            continue  # the dish is full here
+        pile.add(pts, rad)
         e = {"type": kind, "radius": rad, "orientation": [r4(x) for x in q]}
         if kind == "bean":
             e["samples"] = [[r4(x) for x in p] for p in pts]
         else:
             e["position"] = [r4(x) for x in pts[0]]
         els.append(e)
-    # The bowl's inside: a spherical cap of radius 6 cut at 3.4 above its bottom.
-    R, h = 5.5, 3.0
+    # The bowl's inside: a spherical cap of radius 6.2 cut at 3.5 above its bottom.
+    R, h = 6.2, 3.5
     profile = [(0, 0)]
     for k in range(1, 17):
         z = h * k / 16
         profile.append((math.sqrt(max(0.0, R * R - (R - z) ** 2)), z))
     profile.append((0, h))
     sm.revolve(profile, 48).transformed(lambda p: (p[0] + R, p[1] + R, p[2])).write_obj(
-        os.path.join(HERE, "bowl.obj"), "the inside of a bowl (spherical cap, radius 5.5, depth 3)")
+        os.path.join(HERE, "bowl.obj"), "the inside of a bowl (spherical cap, radius 6.2, depth 3.5)")
     write_exemplar("dish_3d", 3, size, types, els,
-                   "A dish: corn kernels, carrot dice and three-sample green beans mixed in a layer on "
-                   "a floor (%d elements), periodic in x and y." % len(els))
+                   "A dish: corn kernels, carrot dice and three-sample green beans dropped one by one "
+                   "into a settled pile on a floor (%d elements), periodic in x and y." % len(els))
 
 
 def smooth_curve(rng, start, heading, length, samples, bend):
