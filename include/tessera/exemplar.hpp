@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct ElementType {
     // Optional reference sample layout in the mesh's local frame (geometry.hpp); empty =
     // derived from the first element of the type. Required for deformable types with a mesh.
     std::vector<Vec3> reference;
+    // Classes this one depends on in the PCF method's dependency graph (pcf_synthesis.hpp),
+    // by name; unset = every earlier type; an empty list = none (an independent class).
+    std::optional<std::vector<std::string>> depends_on;
 };
 
 struct Element {

@@ -86,10 +86,10 @@ inline Exemplar mixed_exemplar(const std::string& mesh) {
     ex.dimension = 3;
     ex.domain = Domain::box({0, 0, 0}, {10, 10, 10}, 3);
     const std::vector<Vec3> layout = {{-0.6, -0.2, 0.1}, {0.4, -0.2, -0.3}, {0.2, 0.4, 0.2}};
-    ex.types.push_back({"shard", true, false, mesh, {}});
-    ex.types.push_back({"worm", false, false, mesh, {{-0.5, 0, 0}, {0, 0, 0}, {0.5, 0, 0}}});
-    ex.types.push_back({"ball", true, false, "", {}});
-    ex.types.push_back({"rope", false, false, "", {}});
+    ex.types.push_back({"shard", true, false, mesh, {}, std::nullopt});
+    ex.types.push_back({"worm", false, false, mesh, {{-0.5, 0, 0}, {0, 0, 0}, {0.5, 0, 0}}, std::nullopt});
+    ex.types.push_back({"ball", true, false, "", {}, std::nullopt});
+    ex.types.push_back({"rope", false, false, "", {}, std::nullopt});
     const Quat turns[3] = {Quat{}, unit(0.3, 0.5, -0.7, 0.1), unit(-0.2, 0.9, 0.1, 0.4)};
     for (int i = 0; i < 3; ++i) {
         std::vector<Vec3> samples;

@@ -139,7 +139,7 @@ TEST_F(GeometryRigid, SingleSampleElementsUseTheirPose) {
     Exemplar ex;
     ex.dimension = 3;
     ex.domain = Domain::box({0, 0, 0}, {5, 5, 5}, 3);
-    ex.types.push_back({"rock", true, false, write_mesh("rock.obj", tetrahedron()), {}});
+    ex.types.push_back({"rock", true, false, write_mesh("rock.obj", tetrahedron()), {}, std::nullopt});
     const int e = ex.add_element(0, {{1, 2, 3}});
     ex.elements[e].orientation = unit(0.2, 0.4, -0.1, 0.8);
     ex.elements[e].scale = 0.5;

@@ -26,7 +26,7 @@ protected:
         Exemplar ex;
         ex.dimension = 2;
         ex.domain = Domain::box({0, 0, 0}, {4, 4, 0}, 2);
-        ex.types.push_back({"spaghetti", rigid, false, mesh, reference});
+        ex.types.push_back({"spaghetti", rigid, false, mesh, reference, std::nullopt});
         ex.add_element(0, {{1, 1, 0}, {2, 1, 0}});
         return ex;
     }

@@ -87,8 +87,8 @@ Exemplar rich_exemplar(int dimension) {
     ex.domain = dimension == 2 ? Domain::box({-1, 0, 0}, {10.5, 1.0 / 3.0, 0}, 2)
                                : Domain::box({0, 0, -2}, {4, 5, 6.25}, 3);
     const double rz = dimension == 3 ? 0.125 : 0.0;
-    ex.types.push_back({"stick", false, false, "meshes/stick.obj", {{-1.0 / 3.0, -0.05, -rz}, {0, 0, 0}, {1.0 / 3.0, 0.05, rz}}});
-    ex.types.push_back({"pebble", true, true, "", {}});
+    ex.types.push_back({"stick", false, false, "meshes/stick.obj", {{-1.0 / 3.0, -0.05, -rz}, {0, 0, 0}, {1.0 / 3.0, 0.05, rz}}, std::nullopt});
+    ex.types.push_back({"pebble", true, true, "", {}, std::nullopt});
     ex.attribute_names = {"hue", "wet ness"};
     const double z = dimension == 3 ? 0.7 : 0.0;
     for (int i = 0; i < 4; ++i) {

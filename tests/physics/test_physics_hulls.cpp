@@ -34,7 +34,7 @@ Arrangement cubes(const std::string& mesh) {
     Arrangement a;
     a.dimension = 3;
     a.domain = Domain::box({0, 0, 0}, {10, 10, 10}, 3);
-    a.types.push_back({"cube", true, false, mesh, {}});
+    a.types.push_back({"cube", true, false, mesh, {}, std::nullopt});
     return a;
 }
 

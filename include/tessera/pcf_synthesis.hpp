@@ -1,0 +1,142 @@
+// tessera/pcf_synthesis.hpp — multi-class distributions of (possibly overlapping) disks
+// from pair correlation functions: Ecormier-Nocca, Memari, Gain and Cani, "Accurate
+// Synthesis of Multi-Class Disk Distributions" (Eurographics 2019), sections 3 to 5,
+// Algorithm 1, Equations 1 to 11. The second synthesis method beside det.hpp
+// (`tessera synth --method pcf`), 2D only.
+//
+// Distances on the PCF axis are normalised by r_max (Eq. 1, from the density of the
+// exemplar's elements in the domain, all classes together):
+//   - points (both radii 0): x = d / r_max;
+//   - disks: x = f_norm(d, r1, r2) (Eq. 7 to 10), which maps the salient configurations
+//     to fixed values: inner border (d = r1 - r2) -> 1, centre on the border (d = r1) -> 2,
+//     outer border / tangent (d = r1 + r2) -> 3. Beyond contact Eq. 10 as printed is not
+//     continuous (f - 4 r1 + 2 r2 + 3 gives 3 + 4 r2 at tangency); tessera uses
+//     x = 3 + (d - r1 - r2) / r_max, continuous, so the axis beyond 3 is the gap between
+//     the disks in units of r_max. Equal radii (r1 = r2): the nested branch collapses to
+//     d = 0 -> x = 0. The Euclidean centre distance is kept for r_max and for the
+//     boundary correction, as the paper does.
+// The PCF of Eq. 2 in a domain W of area |W| for an ordered class pair (a, b):
+//   PCF_ab(x_k) = |W| / (A_k n_a n_b) * sum_{i in a, j in b, i != j} k_sigma(x_k - x_ij) / c_i(x_k)
+// with the ring area A_k = 2 pi x_k step r_max^2 (x_k >= step / 2), the paper's kernel
+// k_sigma(t) = exp(-t^2 / sigma^2) / (sqrt(pi) sigma), n_a n_b -> n_a (n_a - 1) when a == b,
+// and c_i(x) the fraction of the circle of Euclidean radius x r_max around P_i that lies in
+// W (the perimeter-fraction boundary correction of section 3.1). Individual PCFs (Eq. 3)
+// are the same sum restricted to one reference element i (divided by n_b, not n_a n_b);
+// their lower and upper envelopes over the exemplar's elements bound the validity region
+// (section 5.1).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/domain.hpp"
+#include "tessera/exemplar.hpp"
+#include "tessera/progress.hpp"
+
+namespace tessera {
+
+// Analysis parameters (the paper's section 6 values are the defaults).
+struct PcfAnalysisSettings {
+    double sigma = 0.25;   // Gaussian kernel width on the normalised axis, > 0
+    double step = 0.1;     // spacing of the PCF's x values on the normalised axis, > 0
+    double extent = 5.0;   // neighbourhood: points up to x = extent; disks up to x = 3 + extent; > 0
+};
+
+// The disk metric f (Eq. 7 to 9); radii in either order, >= 0.
+double disk_metric(double d, double ra, double rb);
+// The normalised disk metric on the PCF axis (see above); points when both radii are 0.
+double disk_metric_normalised(double d, double ra, double rb, double r_max);
+// r_max of Eq. 1 for n elements in an area: 2 sqrt(area / (2 sqrt(3) n)).
+double pcf_r_max(double area, int n);
+
+// One PCF of the model: mean (Eq. 2) and the envelopes of the individual PCFs (Eq. 3).
+struct PcfEnvelope {
+    int parent = 0, child = 0;    // class indices: the child depends on the parent (equal: within a class)
+    std::vector<double> mean;     // one value per x of PcfModel::x
+    std::vector<double> lower;    // lowest individual PCF at each x (over the child's elements)
+    std::vector<double> upper;    // highest individual PCF at each x
+};
+
+// The analysed exemplar: everything synthesis needs.
+struct PcfModel {
+    std::vector<std::string> classes;        // element type names, in the exemplar's order
+    std::vector<std::vector<int>> parents;   // dependency DAG: parents[c] = the classes c depends on
+    std::vector<int> order;                  // a topological order of the classes
+    std::vector<PcfEnvelope> pcfs;           // one per class (within) and one per DAG edge
+    std::vector<double> x;                   // the normalised axis: x_k = k * step
+    std::vector<int> counts;                 // elements per class in the exemplar
+    std::vector<std::vector<double>> radii;  // per class: the exemplar's radii, sorted largest first
+    bool disks = false;                      // some element has a radius > 0
+    double r_max = 0.0;                      // Eq. 1, data units
+    double area = 0.0;                       // |W| of the exemplar's domain
+    PcfAnalysisSettings settings;
+};
+
+// Analyses an exemplar (2D, single-sample elements). The dependency graph comes from the
+// types (ElementType::depends_on); a type without one depends on every earlier type.
+// Throws Error(input) naming the class for: a class with fewer than 2 elements, a
+// radius < 0, a dependency cycle (naming the classes on it) or an unknown class name;
+// Error(option) for bad settings; Error(input) for 3D data or multi-sample elements.
+PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSettings& settings = {});
+
+// The model as JSON (`tessera analyze -o model.json`) and back.
+std::string pcf_model_to_json(const PcfModel& model);
+PcfModel pcf_model_from_json(const std::string& text, const std::string& source);
+
+// PCFs of an arrangement on a model's axis and class pairs (r_max and settings of the
+// model, the arrangement's own domain and counts): mean and envelopes, in model.pcfs order.
+std::vector<PcfEnvelope> measure_distribution(const PcfModel& model, const Exemplar& data);
+
+struct PcfSynthOptions {
+    PcfAnalysisSettings analysis;
+    std::uint64_t seed = 1;
+    int threads = 0;                  // 0 = all hardware threads; results identical for any value
+    // Initialisation (Algorithm 1): threshold eps = epsilon0 + epsilon_step * fails; after
+    // max_fails successive rejections, grid search (grid_cells cells along the longer side).
+    double epsilon0 = 0.0;
+    double epsilon_step = 0.001;
+    int max_fails = 1000;
+    int grid_cells = 64;
+    // Refinement (Eq. 4 to 6): at most max_iterations sweeps; stops when the total movement
+    // of a sweep is below convergence * r_max.
+    int max_iterations = 100;
+    double convergence = 1e-3;
+    // Re-initialise elements whose individual PCF leaves the validity region after
+    // refinement (section 6.4), at most this many rounds.
+    int outlier_rounds = 2;
+};
+
+// Synthesizes the model's distribution in `domain` (2D: box or polygon, any size): element
+// counts = the exemplar's density x the domain's area per class. Returns the arrangement
+// (single-sample elements with their radii) and stats (method "pcf", the refinement error
+// per iteration in stats.energy, bound hits in stats.solver_bound_hits and notes of
+// fallbacks). Throws Error(domain) when the domain is too small for one element of some
+// class, Error(option) for bad options, Cancelled when progress returns false.
+Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const PcfSynthOptions& options = {},
+                           const Progress& progress = {});
+// analyze_distribution(exemplar, options.analysis) + synthesize_pcf.
+Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const PcfSynthOptions& options = {},
+                           const Progress& progress = {});
+
+// The salient disk configurations of section 4.1, counted over pairs of disks whose
+// centres are closer than the sum of radii plus `margin` (all pairs within a class pair):
+// disjoint (gap > tolerance), tangent (|gap| <= tolerance), overlapping, nested (one inside
+// the other). `tolerance` is relative to the smaller radius.
+struct DiskConfigurationShares {
+    double disjoint = 0, tangent = 0, overlapping = 0, nested = 0;  // fractions, sum 1 (0 when no pairs)
+    int pairs = 0;
+};
+DiskConfigurationShares disk_configurations(const Exemplar& data, double margin, double tolerance = 0.05);
+
+// How well an output reproduces a model (the issue's acceptance measures).
+struct PcfQuality {
+    std::vector<double> inside_fraction;  // per model PCF: share of x values where the output's mean PCF
+                                          // lies within [lower, upper] of the model
+    std::vector<double> count_ratio;      // per class: output count / (model density x output area)
+    DiskConfigurationShares input_shares, output_shares;
+};
+PcfQuality compare_distribution(const PcfModel& model, const Exemplar& exemplar, const Exemplar& output);
+
+}  // namespace tessera
