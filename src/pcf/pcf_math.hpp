@@ -51,9 +51,8 @@ inline Axis make_axis(const PcfAnalysisSettings& s, bool disks) {
 }
 
 // Fraction of the circle of radius rho around p that lies in the domain (section 3.1's
-// boundary correction weight), from 64 points on the circle; 1 when rho <= 0. Boxes are
-// answered exactly by the same sampling (no special case, so results do not depend on
-// the domain's kind beyond its shape).
+// boundary correction weight), estimated from 64 points on the circle for every kind of
+// domain (within 1/64 of the exact fraction); 1 when rho <= 0.
 inline double circle_inside_fraction(const Domain& domain, const Vec3& p, double rho) {
     if (!(rho > 0.0)) return 1.0;
     constexpr int samples = 64;
