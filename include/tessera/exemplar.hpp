@@ -81,11 +81,15 @@ struct Exemplar {
 
 // Statistics a method reports about its run.
 struct RunStats {
-    std::string method;                  // "det", ...
+    std::string method;                  // "det", "pcf"
     std::vector<double> energy;          // energy found by each iteration's search (Eq. 2)
     double final_energy = 0.0;           // energy of the returned arrangement
     double radius = 0.0;                 // neighbourhood radius used
     int solver_bound_hits = 0;           // iterations whose linear solve hit its iteration bound
+                                         // (pcf: refinements that stopped at max_iterations)
+    int fallbacks = 0;                   // work done by a slower fallback path (pcf: elements
+                                         // placed by grid search instead of dart throwing)
+    std::vector<std::string> notes;      // one line per remark worth telling a user (fallbacks, ...)
     // Interleaved physics (when used): interpenetrating element pairs, deepest overlap
     // and floating elements before the first physics step and in the result.
     bool physics = false;

@@ -17,7 +17,16 @@ constexpr std::uint64_t mix64(std::uint64_t z) {
 }
 
 // What a draw is for; part of the key so that purposes never share numbers.
-enum class Purpose : std::uint64_t { patch_choice = 1, patch_offset = 2, tie_break = 3, jitter = 4, test = 99 };
+enum class Purpose : std::uint64_t {
+    patch_choice = 1,
+    patch_offset = 2,
+    tie_break = 3,
+    jitter = 4,
+    pcf_dart = 5,   // PCF synthesis: dart-throwing positions
+    pcf_grid = 6,   // PCF synthesis: grid-search jitter
+    pcf_radii = 7,  // PCF synthesis: radii drawn to make up a shortfall
+    test = 99
+};
 
 // A keyed stream: draw(i) is a pure function of (seed, purpose, a, b, i).
 class KeyedRng {
