@@ -1,0 +1,232 @@
+// PCF synthesis, initialisation: the candidate error of Eq. 11 and Algorithm 1 (dart
+// throwing with a threshold relaxed by every rejection, then grid search).
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "pcf/synth_steps.hpp"
+
+namespace tessera::pcf {
+
+double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit,
+                       const double* inverse_table, Scratch& sc, int skip) {
+    const int bins = s.bins;
+    LazyInverse lazy;
+    if (!inverse_table) lazy = s.lazy_at(p, sc.inverse.data());
+    const auto inv = [&](int k) { return inverse_table ? inverse_table[k] : s.lazy_value(lazy, k); };
+    double* R = sc.near_sum.data();
+    double* D = sc.near_ref.data();
+    double* kv = sc.kernel.data();
+
+    double E = 0.0;
+    for (int t : s.class_terms[c]) {
+        const Term& T = s.terms[t];
+        // The mean term can only grow from base_max (contributions are >= 0).
+        if (std::max(E, std::max(T.base_max, 0.0)) > limit) return kInfinity;
+        std::fill(R, R + bins, 0.0);
+        if (T.within) std::fill(D, D + bins, 0.0);
+        int tlo = bins, thi = -1;
+        double a_run = T.base_max, b_run = 0.0;
+        const bool complete = s.for_each_near(T.parent, p, T.reach, [&](int j) {
+            if (j == skip) return true;
+            const Elem& o = s.elems[j];
+            const PairDistance pd = s.pair(p, r, o.p, o.r);
+            if (pd.x > s.x_limit) return true;
+            int lo = 0;
+            const int n = s.kernel(pd.x, lo, kv);
+            if (n == 0) return true;
+            const double* inv_j = &s.inverse[static_cast<size_t>(j) * bins];
+            for (int m = 0; m < n; ++m) {
+                R[lo + m] += kv[m];
+                if (T.within) D[lo + m] += kv[m] * inv_j[lo + m];
+            }
+            tlo = std::min(tlo, lo);
+            thi = std::max(thi, lo + n - 1);
+            if (limit < kInfinity) {
+                // Both the mean term and the upper-envelope term only grow as pairs are
+                // added: a lower bound of E that lets a hopeless candidate go early.
+                for (int k = lo; k < lo + n; ++k) {
+                    const double ik = inv(k);
+                    a_run = std::max(a_run, (T.norm[k] * (T.sum[k] + ik * R[k] + D[k]) - T.target[k]) * T.inv_target[k]);
+                    b_run = std::max(b_run, (T.ind_norm[k] * ik * R[k] - T.upper[k]) * T.inv_upper[k]);
+                }
+                if (std::max(E, std::max(a_run, 0.0) + b_run) > limit) return false;
+            }
+            return true;
+        });
+        if (!complete) return kInfinity;
+        double a_max = T.base_max;
+        for (int k = tlo; k <= thi; ++k)
+            a_max = std::max(a_max, (T.norm[k] * (T.sum[k] + inv(k) * R[k] + D[k]) - T.target[k]) * T.inv_target[k]);
+        // The lower envelope of a class's own PCF cannot be reached while the class is
+        // still being placed: it counts only once the class is complete.
+        const bool use_lower = !T.within || fill >= 1.0;
+        double env = 0.0;
+        for (int k = 0; k < bins; ++k) {
+            const double ind = R[k] != 0.0 ? T.ind_norm[k] * inv(k) * R[k] : 0.0;
+            env = std::max(env, (ind - T.upper[k]) * T.inv_upper[k]);
+            if (use_lower) env = std::max(env, (T.lower[k] - ind) / std::max(T.lower[k], kTargetFloor));
+        }
+        E = std::max(E, std::max(a_max, 0.0) + env);
+        if (E > limit) return kInfinity;
+    }
+    return E;
+}
+
+double envelope_violation(const State& s, int i, Scratch& sc) {
+    const int bins = s.bins;
+    const Elem& e = s.elems[i];
+    const double* inv_i = &s.inverse[static_cast<size_t>(i) * bins];
+    double* R = sc.near_sum.data();
+    double* kv = sc.kernel.data();
+    double v = 0.0;
+    for (int t : s.class_terms[e.cls]) {
+        const Term& T = s.terms[t];
+        std::fill(R, R + bins, 0.0);
+        s.for_each_near(T.parent, e.p, T.reach, [&](int j) {
+            if (j == i) return true;
+            const Elem& o = s.elems[j];
+            const PairDistance pd = s.pair(e.p, e.r, o.p, o.r);
+            if (pd.x > s.x_limit) return true;
+            int lo = 0;
+            const int n = s.kernel(pd.x, lo, kv);
+            for (int m = 0; m < n; ++m) R[lo + m] += kv[m];
+            return true;
+        });
+        for (int k = 0; k < bins; ++k) {
+            const double ind = T.ind_norm[k] * inv_i[k] * R[k];
+            v = std::max(v, (ind - T.upper[k]) * T.inv_upper[k]);
+            v = std::max(v, (T.lower[k] - ind) / std::max(T.lower[k], kTargetFloor));
+        }
+    }
+    return v;
+}
+
+namespace {
+
+// grid_cells cells along the longer side of the domain's bounds; the boundary
+// correction at every cell centre, computed in parallel once.
+void build_grid(const State& s, const InitSettings& st, SearchGrid& g) {
+    const Box b = s.domain.bounds();
+    const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+    g.cell = std::max(w, h) / st.grid_cells;
+    g.nx = std::max(1, static_cast<int>(std::ceil(w / g.cell - 1e-9)));
+    g.ny = std::max(1, static_cast<int>(std::ceil(h / g.cell - 1e-9)));
+    const int cells = g.nx * g.ny;
+    g.inverse.assign(static_cast<size_t>(cells) * s.bins, 1.0);
+    core::parallel_for(cells, st.threads, [&](int begin, int end, int) {
+        for (int cell = begin; cell < end; ++cell) {
+            const Vec3 q{b.lo.x + (cell % g.nx + 0.5) * g.cell, b.lo.y + (cell / g.nx + 0.5) * g.cell, 0.0};
+            const double dist = s.domain.distance_to_boundary(q);
+            double* out = &g.inverse[static_cast<size_t>(cell) * s.bins];
+            for (int k = 0; k < s.bins; ++k) {
+                const double rho = s.axis.x(k) * s.r_max;
+                out[k] = rho <= dist ? 1.0 : 1.0 / s.inside_fraction(q, rho);
+            }
+        }
+    });
+    g.built = true;
+}
+
+}  // namespace
+
+InitReport initialise(State& s, int c, const std::vector<int>& elements, const InitSettings& st, SearchGrid& grid,
+                      const std::function<void()>& tick) {
+    InitReport report;
+    if (elements.empty()) return report;
+    const Box b = s.domain.bounds();
+    const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+    const core::KeyedRng dart(st.seed, core::Purpose::pcf_dart, static_cast<std::uint64_t>(c),
+                              static_cast<std::uint64_t>(st.round));
+    std::vector<Scratch> scratch(std::max(1, st.threads), Scratch(s));
+    std::uint64_t attempt = 0;  // dart throws of this class (and round): the key of their positions
+    int fails = 0;              // successive rejections
+    bool grid_mode = st.max_fails <= 0;
+    int since_tick = 0;
+    // Draws a dart inside the domain (draws outside it are not candidates: they are skipped).
+    const auto draw_inside = [&](Vec3& p) {
+        for (int miss = 0; miss < 1000000; ++miss) {
+            const std::uint64_t a = attempt++;
+            p = {b.lo.x + w * dart.uniform(2 * a), b.lo.y + h * dart.uniform(2 * a + 1), 0.0};
+            if (s.domain.inside(p)) return true;
+        }
+        return false;
+    };
+
+    for (int i : elements) {
+        const double r = s.elems[i].r;
+        const double fill = s.count[c] > 0 ? static_cast<double>(s.placed(c)) / s.count[c] : 1.0;
+        bool placed = false;
+        while (!grid_mode) {
+            Vec3 p;
+            if (!draw_inside(p)) {  // a domain that covers almost none of its bounds
+                grid_mode = true;
+                break;
+            }
+            const double eps = st.epsilon0 + st.epsilon_step * fails;
+            // Accept when E < eps: anything not below eps is rejected, so evaluation may stop there.
+            const double E = candidate_error(s, c, p, r, fill, std::nextafter(eps, -kInfinity), nullptr, scratch[0]);
+            if (E < eps) {
+                s.insert(i, p);
+                fails = 0;
+                placed = true;
+                break;
+            }
+            if (++fails >= st.max_fails) grid_mode = true;
+        }
+        if (!placed) {
+            // Grid search: the error at a keyed random point of every cell, the lowest wins,
+            // evaluated in parallel; each chunk stops evaluating a cell once it cannot equal
+            // the chunk's best, which never changes the set of winners.
+            if (!grid.built) build_grid(s, st, grid);
+            const int cells = grid.nx * grid.ny;
+            const core::KeyedRng jitter(st.seed, core::Purpose::pcf_grid, static_cast<std::uint64_t>(c),
+                                        (static_cast<std::uint64_t>(st.round) << 32) | static_cast<std::uint64_t>(i));
+            std::vector<double> error(cells, kInfinity);
+            const auto point = [&](int cell) {
+                return Vec3{b.lo.x + (cell % grid.nx + jitter.uniform(2 * static_cast<std::uint64_t>(cell))) * grid.cell,
+                            b.lo.y + (cell / grid.nx + jitter.uniform(2 * static_cast<std::uint64_t>(cell) + 1)) * grid.cell,
+                            0.0};
+            };
+            core::parallel_for(cells, st.threads, [&](int begin, int end, int thread) {
+                double best = kInfinity;
+                for (int cell = begin; cell < end; ++cell) {
+                    const Vec3 p = point(cell);
+                    if (!s.domain.inside(p)) continue;
+                    error[cell] = candidate_error(s, c, p, r, fill, best,
+                                                  &grid.inverse[static_cast<size_t>(cell) * s.bins], scratch[thread]);
+                    best = std::min(best, error[cell]);
+                }
+            });
+            // The lowest error; a keyed random one of the cells that share it (E is 0 in
+            // every cell where the element fits, and the first of them would be a corner).
+            double lowest = kInfinity;
+            for (int cell = 0; cell < cells; ++cell) lowest = std::min(lowest, error[cell]);
+            int chosen = -1;
+            if (lowest < kInfinity) {
+                std::vector<int> ties;
+                for (int cell = 0; cell < cells; ++cell)
+                    if (error[cell] == lowest) ties.push_back(cell);
+                chosen = ties[jitter.below(2 * static_cast<std::uint64_t>(cells), ties.size())];
+            }
+            Vec3 p;
+            if (chosen >= 0) {
+                p = point(chosen);
+                ++report.by_grid;
+            } else {
+                // No cell's point fell inside (a domain thinner than a cell): any point inside.
+                if (!draw_inside(p)) p = s.domain.closest_inside(b.lo + (b.hi - b.lo) * 0.5);
+                ++report.by_fallback;
+            }
+            s.insert(i, p);
+        }
+        if (++since_tick == 64) {
+            since_tick = 0;
+            tick();
+        }
+    }
+    return report;
+}
+
+}  // namespace tessera::pcf

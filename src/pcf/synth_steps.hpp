@@ -1,0 +1,79 @@
+// The steps of PCF synthesis on the incremental state (synth_state.hpp): the error of
+// a candidate (Eq. 11), initialisation (Algorithm 1), refinement (Eq. 4 to 6) and the
+// validity check of section 6.4. Private to the library.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "pcf/synth_state.hpp"
+
+namespace tessera::pcf {
+
+// Per-thread buffers of candidate evaluations.
+struct Scratch {
+    std::vector<double> near_sum;    // R_k: sum of kernel values of the candidate's pairs
+    std::vector<double> near_ref;    // D_k: the same with the neighbours as references (within a class)
+    std::vector<double> inverse;     // lazily computed 1 / c(x_k) of the candidate
+    std::vector<double> kernel;      // one pair's kernel values
+    explicit Scratch(const State& s)
+        : near_sum(s.bins), near_ref(s.bins), inverse(s.bins), kernel(s.kernel_max) {}
+};
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// E of Eq. 11 for an element of class c with radius r at p against the placed elements
+// (skipping element `skip`): per active PCF (the class's own and its parent edges) the
+// mean term plus the envelope term, the largest over the PCFs. `fill` is the share of
+// the class placed so far: below 1 the lower envelope of the class's own PCF is left out
+// (a partial class cannot reach it yet). Returns kInfinity as soon as E is known to
+// exceed `limit`. `inverse_table`: 1 / c(x_k) to use instead of the candidate's own.
+double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit,
+                       const double* inverse_table, Scratch& scratch, int skip = -1);
+
+// How far element i's individual PCFs leave the validity region: the envelope term of
+// Eq. 11 over its class's PCFs, with every element placed.
+double envelope_violation(const State& s, int i, Scratch& scratch);
+
+// The grid of the grid search (section 5.2), with the boundary correction at each cell
+// centre, built on first use.
+struct SearchGrid {
+    int nx = 0, ny = 0;
+    double cell = 0.0;
+    std::vector<double> inverse;  // cells x bins
+    bool built = false;
+};
+
+struct InitSettings {
+    std::uint64_t seed = 1;
+    int threads = 1;
+    double epsilon0 = 0.0, epsilon_step = 0.001;
+    int max_fails = 1000;
+    int grid_cells = 64;
+    int round = 0;  // 0 = first placement, then the outlier round (keys the random numbers)
+};
+
+struct InitReport {
+    int by_grid = 0;      // elements placed by grid search
+    int by_fallback = 0;  // elements placed at a random point because no grid cell centre was inside
+};
+
+// Algorithm 1 for `elements` (unplaced, of class c, in placement order): dart throwing,
+// then grid search once max_fails successive candidates were rejected. `tick` is called
+// on the calling thread every few placements (it may throw Cancelled).
+InitReport initialise(State& s, int c, const std::vector<int>& elements, const InitSettings& settings,
+                      SearchGrid& grid, const std::function<void()>& tick);
+
+struct RefineReport {
+    int sweeps = 0;
+    bool converged = false;
+};
+
+// Refinement of `elements` (placed, of class c) by Eq. 4 to 6 against the class's PCFs,
+// at most max_iterations sweeps; on_sweep(energy, movement) after each one.
+RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence,
+                    int threads, const std::function<void(double energy)>& on_sweep);
+
+}  // namespace tessera::pcf

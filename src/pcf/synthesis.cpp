@@ -1,0 +1,288 @@
+// PCF synthesis (pcf_synthesis.hpp): output counts and radii (section 4.3), then per
+// class in the model's topological order: initialisation (Algorithm 1), refinement
+// (Eq. 4 to 6) against the class's own PCF and its parent edges (section 3.2; parents
+// stay where they are), and re-placement of the elements whose individual PCFs leave the
+// validity region (section 6.4). docs/pcf_synthesis.md describes the whole method.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "pcf/synth_steps.hpp"
+#include "tessera/error.hpp"
+#include "tessera/pcf_synthesis.hpp"
+
+namespace tessera {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void report(const Progress& progress, const ProgressEvent& event) {
+    if (progress && !progress(event)) throw Cancelled();
+}
+
+// An element's individual PCF further outside the validity region than this (the
+// envelope term of Eq. 11: relative to the bound) makes it an outlier (section 6.4):
+// above its upper envelope by 90% of the envelope, or below 10% of its lower envelope.
+constexpr double kOutlierTolerance = 0.9;
+// At most this share of a class is re-placed per outlier round (the worst first).
+constexpr double kOutlierShare = 0.1;
+// An outlier round may raise the class's PCF error (sum of squares) by this much.
+constexpr double kOutlierSlack = 0.1;
+
+[[noreturn]] void bad_option(const std::string& message) { throw Error(ErrorKind::option, message); }
+
+void check_options(const PcfSynthOptions& o) {
+    const auto finite_at_least = [](double v, double lo) { return std::isfinite(v) && v >= lo; };
+    if (o.threads < 0) bad_option("threads must be >= 0 (0 = all hardware threads), got " + std::to_string(o.threads));
+    if (!finite_at_least(o.epsilon0, 0.0)) bad_option("epsilon0 must be a finite number >= 0");
+    if (!finite_at_least(o.epsilon_step, 0.0)) bad_option("epsilon_step must be a finite number >= 0");
+    if (o.max_fails < 0) bad_option("max_fails must be >= 0, got " + std::to_string(o.max_fails));
+    if (o.grid_cells < 1 || o.grid_cells > 4096)
+        bad_option("grid_cells must be from 1 to 4096, got " + std::to_string(o.grid_cells));
+    if (o.max_iterations < 0) bad_option("max_iterations must be >= 0, got " + std::to_string(o.max_iterations));
+    if (!finite_at_least(o.convergence, 0.0)) bad_option("convergence must be a finite number >= 0");
+    if (o.outlier_rounds < 0) bad_option("outlier_rounds must be >= 0, got " + std::to_string(o.outlier_rounds));
+}
+
+[[noreturn]] void bad_model(const std::string& message) { throw Error(ErrorKind::input, "PCF model: " + message); }
+
+// A model from a file may be inconsistent: check everything synthesis indexes.
+void check_model(const PcfModel& m) {
+    const int classes = static_cast<int>(m.classes.size());
+    if (classes == 0) bad_model("no classes");
+    const PcfAnalysisSettings& s = m.settings;
+    if (!(std::isfinite(s.sigma) && s.sigma > 0.0 && std::isfinite(s.step) && s.step > 0.0 &&
+          std::isfinite(s.extent) && s.extent > 0.0))
+        bad_model("sigma, step and extent must be numbers > 0");
+    const int bins = pcf::make_axis(s, m.disks).bins;
+    if (static_cast<int>(m.x.size()) != bins)
+        bad_model("the axis has " + std::to_string(m.x.size()) + " values, its settings give " + std::to_string(bins));
+    if (!(std::isfinite(m.r_max) && m.r_max > 0.0)) bad_model("r_max must be a number > 0");
+    if (!(std::isfinite(m.area) && m.area > 0.0)) bad_model("area must be a number > 0");
+    if (static_cast<int>(m.parents.size()) != classes || static_cast<int>(m.counts.size()) != classes ||
+        static_cast<int>(m.radii.size()) != classes)
+        bad_model("parents, counts and radii need one entry per class");
+    std::vector<int> position(classes, -1);
+    if (static_cast<int>(m.order.size()) != classes) bad_model("the order must list every class once");
+    for (int k = 0; k < classes; ++k) {
+        const int c = m.order[k];
+        if (c < 0 || c >= classes || position[c] >= 0) bad_model("the order must list every class once");
+        position[c] = k;
+    }
+    for (int c = 0; c < classes; ++c) {
+        if (m.counts[c] < 0) bad_model("class '" + m.classes[c] + "' has a negative count");
+        for (double r : m.radii[c])
+            if (!(std::isfinite(r) && r >= 0.0)) bad_model("class '" + m.classes[c] + "' has a radius that is not >= 0");
+        for (int p : m.parents[c])
+            if (p < 0 || p >= classes || position[p] >= position[c])
+                bad_model("class '" + m.classes[c] + "' has a parent that is not before it in the order");
+    }
+    for (const PcfEnvelope& e : m.pcfs) {
+        if (e.parent < 0 || e.parent >= classes || e.child < 0 || e.child >= classes)
+            bad_model("a PCF names a class that does not exist");
+        if (position[e.parent] > position[e.child]) bad_model("a PCF's parent comes after its child in the order");
+        if (static_cast<int>(e.mean.size()) != bins || static_cast<int>(e.lower.size()) != bins ||
+            static_cast<int>(e.upper.size()) != bins)
+            bad_model("the PCF of " + m.classes[e.parent] + " -> " + m.classes[e.child] + " does not have " +
+                      std::to_string(bins) + " values");
+        for (int k = 0; k < bins; ++k)
+            if (!std::isfinite(e.mean[k]) || !std::isfinite(e.lower[k]) || !std::isfinite(e.upper[k]))
+                bad_model("the PCF of " + m.classes[e.parent] + " -> " + m.classes[e.child] + " has a value that is not finite");
+    }
+}
+
+// Section 4.3: the exemplar's radii repeated as often as they fit, the shortfall drawn at
+// random without repeats, sorted largest first.
+std::vector<double> output_radii(const std::vector<double>& input, int n, std::uint64_t seed, int c) {
+    std::vector<double> out;
+    if (n <= 0) return out;
+    if (input.empty()) return std::vector<double>(n, 0.0);
+    const int m = static_cast<int>(input.size());
+    for (int k = 0; k + m <= n; k += m) out.insert(out.end(), input.begin(), input.end());
+    const int rest = n - static_cast<int>(out.size());
+    std::vector<int> index(m);
+    std::iota(index.begin(), index.end(), 0);
+    const core::KeyedRng rng(seed, core::Purpose::pcf_radii, static_cast<std::uint64_t>(c));
+    for (int k = 0; k < rest; ++k) {  // partial Fisher-Yates
+        const int pick = k + static_cast<int>(rng.below(k, static_cast<std::uint64_t>(m - k)));
+        std::swap(index[k], index[pick]);
+        out.push_back(input[index[k]]);
+    }
+    std::sort(out.begin(), out.end(), std::greater<>());
+    return out;
+}
+
+std::string format(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+}  // namespace
+
+Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const PcfSynthOptions& options,
+                           const Progress& progress) {
+    const auto t0 = Clock::now();
+    check_options(options);
+    check_model(model);
+    if (domain.dimension() != 2)
+        throw Error(ErrorKind::domain, "the PCF method synthesizes in 2D; the output domain is 3D");
+    const int threads = core::resolve_threads(options.threads);
+    const int classes = static_cast<int>(model.classes.size());
+
+    // Counts = the exemplar's density x the output area, per class.
+    const double area = domain.measure();
+    std::vector<std::vector<double>> radii(classes);
+    for (int c = 0; c < classes; ++c) {
+        const double expected = model.counts[c] / model.area * area;
+        const int n = static_cast<int>(std::lround(expected));
+        if (model.counts[c] > 0 && n < 1)
+            throw Error(ErrorKind::domain, "the output domain " + domain.describe() + " (area " + format(area) +
+                                               ") is too small for one element of class '" + model.classes[c] +
+                                               "' (" + format(expected) + " expected)");
+        radii[c] = output_radii(model.radii[c], n, options.seed, c);
+    }
+
+    Arrangement out;
+    RunStats& stats = out.stats;
+    stats.method = "pcf";
+    stats.seed = options.seed;
+    stats.threads = threads;
+    stats.radius = model.r_max;
+
+    pcf::State state(model, domain, radii);
+    pcf::SearchGrid grid;
+    pcf::InitSettings init;
+    init.seed = options.seed;
+    init.threads = threads;
+    init.epsilon0 = options.epsilon0;
+    init.epsilon_step = options.epsilon_step;
+    init.max_fails = options.max_fails;
+    init.grid_cells = options.grid_cells;
+    pcf::Scratch scratch(state);
+
+    // Progress: sweeps are numbered over the whole run; the plan is max_iterations per class.
+    const int planned = options.max_iterations * classes;
+    int sweep_index = 0;
+    double init_seconds = 0.0;
+    auto sweep_start = Clock::now();
+    const auto tick = [&] { report(progress, {"init", -1, planned, 0.0, seconds_since(t0)}); };
+    const auto on_sweep = [&](double energy) {
+        stats.energy.push_back(energy);
+        stats.iteration_seconds.push_back(seconds_since(sweep_start));
+        report(progress, {"iteration", sweep_index++, planned, energy, seconds_since(t0)});
+        sweep_start = Clock::now();
+    };
+    const auto run_init = [&](int c, const std::vector<int>& elements, int round) {
+        const auto ti = Clock::now();
+        init.round = round;
+        const pcf::InitReport r = pcf::initialise(state, c, elements, init, grid, tick);
+        init_seconds += seconds_since(ti);
+        stats.fallbacks += r.by_grid + r.by_fallback;
+        const std::string name = "class '" + model.classes[c] + "'";
+        const std::string when = round == 0 ? "" : " (outlier round " + std::to_string(round) + ")";
+        if (r.by_grid > 0)
+            stats.notes.push_back("grid search placed " + std::to_string(r.by_grid) + " of " +
+                                  std::to_string(elements.size()) + " elements of " + name + when + " after " +
+                                  std::to_string(options.max_fails) + " successive rejections");
+        if (r.by_fallback > 0)
+            stats.notes.push_back("no grid cell was inside the domain: " + std::to_string(r.by_fallback) +
+                                  " elements of " + name + when + " were placed at random points");
+    };
+    // Returns 1 when the refinement stopped at its sweep bound, not by convergence.
+    const auto run_refine = [&](int c, const std::vector<int>& elements, int sweeps) {
+        sweep_start = Clock::now();
+        const pcf::RefineReport r = pcf::refine(state, c, elements, sweeps, options.convergence, threads, on_sweep);
+        return r.sweeps > 0 && !r.converged ? 1 : 0;
+    };
+
+    for (int c : model.order) {
+        report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
+        const std::vector<int>& members = state.members[c];
+        run_init(c, members, 0);
+        stats.solver_bound_hits += run_refine(c, members, options.max_iterations);
+        // Section 6.4: re-place the elements whose individual PCFs left the validity
+        // region, then refine the class again (a quarter of the sweeps); a round that
+        // makes the class's PCF error worse by more than kOutlierSlack is undone.
+        const auto class_error = [&] {
+            double e = 0.0;
+            for (int t : state.class_terms[c]) e += state.term_error(t);
+            return e;
+        };
+        for (int round = 1; round <= options.outlier_rounds && !members.empty(); ++round) {
+            std::vector<double> violation(members.size());
+            std::vector<pcf::Scratch> per_thread(threads, scratch);
+            core::parallel_for(static_cast<int>(members.size()), threads, [&](int begin, int end, int thread) {
+                for (int k = begin; k < end; ++k)
+                    violation[k] = pcf::envelope_violation(state, members[k], per_thread[thread]);
+            });
+            std::vector<int> outliers;
+            for (size_t k = 0; k < members.size(); ++k)
+                if (violation[k] > kOutlierTolerance) outliers.push_back(static_cast<int>(k));
+            if (outliers.empty()) break;
+            std::stable_sort(outliers.begin(), outliers.end(),
+                             [&](int a, int b) { return violation[a] > violation[b]; });
+            const size_t cap = static_cast<size_t>(std::max(1.0, std::floor(kOutlierShare * members.size())));
+            if (outliers.size() > cap) outliers.resize(cap);
+            std::vector<int> elements;
+            for (int k : outliers) elements.push_back(members[k]);
+            std::sort(elements.begin(), elements.end());  // members are largest radius first
+
+            const double before = class_error();
+            const pcf::State::Snapshot snap = state.snapshot(c);
+            const size_t energies = stats.energy.size();
+            for (int i : elements) state.remove(i);
+            run_init(c, elements, round);
+            const int sweeps = options.max_iterations > 0 ? std::max(1, options.max_iterations / 4) : 0;
+            const int bound_hit = run_refine(c, members, sweeps);
+            const double after = class_error();
+            const std::string what = "outlier round " + std::to_string(round) + " of class '" + model.classes[c] +
+                                     "': " + std::to_string(elements.size()) + " of " +
+                                     std::to_string(members.size()) + " elements re-placed";
+            if (after > before * (1.0 + kOutlierSlack)) {
+                state.restore(c, snap);
+                stats.energy.resize(energies);
+                stats.iteration_seconds.resize(energies);
+                stats.notes.push_back(what + ", undone (its PCF error rose from " + format(before) + " to " +
+                                      format(after) + ")");
+                break;
+            }
+            stats.solver_bound_hits += bound_hit;
+            stats.notes.push_back(what + " (PCF error " + format(before) + " -> " + format(after) + ")");
+        }
+    }
+    stats.init_seconds = init_seconds;
+
+    // The result: elements grouped by class, largest first within a class.
+    out.dimension = 2;
+    out.domain = domain;
+    for (int c = 0; c < classes; ++c) {
+        ElementType type;
+        type.name = model.classes[c];
+        std::vector<std::string> parents;
+        for (int p : model.parents[c]) parents.push_back(model.classes[p]);
+        type.depends_on = parents;
+        out.types.push_back(type);
+    }
+    for (int c = 0; c < classes; ++c)
+        for (int i : state.members[c]) {
+            const pcf::Elem& e = state.elems[i];
+            const int index = out.add_element(c, {e.p}, e.r);
+            out.elements[index].id = static_cast<std::uint64_t>(index);
+        }
+    double final_energy = 0.0;
+    for (int t = 0; t < static_cast<int>(state.terms.size()); ++t) final_energy += state.term_error(t);
+    stats.final_energy = final_energy;
+    stats.total_seconds = seconds_since(t0);
+    report(progress, {"done", sweep_index, planned, final_energy, stats.total_seconds});
+    return out;
+}
+
+}  // namespace tessera
