@@ -66,7 +66,7 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
         for (int k = 0; k < bins; ++k) {
             const double ind = R[k] != 0.0 ? T.ind_norm[k] * inv(k) * R[k] : 0.0;
             env = std::max(env, (ind - T.upper[k]) * T.inv_upper[k]);
-            if (use_lower) env = std::max(env, (T.lower[k] - ind) / std::max(T.lower[k], kTargetFloor));
+            if (use_lower) env = std::max(env, (T.lower[k] - ind) * T.inv_lower[k]);
         }
         E = std::max(E, std::max(a_max, 0.0) + env);
         if (E > limit) return kInfinity;
@@ -97,7 +97,7 @@ double envelope_violation(const State& s, int i, Scratch& sc) {
         for (int k = 0; k < bins; ++k) {
             const double ind = T.ind_norm[k] * inv_i[k] * R[k];
             v = std::max(v, (ind - T.upper[k]) * T.inv_upper[k]);
-            v = std::max(v, (T.lower[k] - ind) / std::max(T.lower[k], kTargetFloor));
+            v = std::max(v, (T.lower[k] - ind) * T.inv_lower[k]);
         }
     }
     return v;

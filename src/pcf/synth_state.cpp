@@ -19,6 +19,7 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     r_max = model.r_max;
     area = domain.measure();
     x_limit = axis.x_limit();
+    floor = kFloorShare / axis.step;
     kernel_max = static_cast<int>(std::floor(2.0 * axis.reach() / axis.step)) + 2;
     kernel_half_ = static_cast<int>(std::ceil(axis.reach() / axis.step)) + 1;
     kernel_width_ = 2 * kernel_half_ + 1;
@@ -73,12 +74,14 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
         t.ind_norm.resize(bins);
         t.inv_target.resize(bins);
         t.inv_upper.resize(bins);
+        t.inv_lower.resize(bins);
         for (int k = 0; k < bins; ++k) {
             const double ring = axis.ring_area(k, r_max);
             t.norm[k] = pairs > 0.0 ? area / (ring * pairs) : 0.0;
             t.ind_norm[k] = n_parent > 0.0 ? area / (ring * n_parent) : 0.0;
-            t.inv_target[k] = 1.0 / std::max(env.mean[k], kTargetFloor);
-            t.inv_upper[k] = 1.0 / std::max(env.upper[k], kTargetFloor);
+            t.inv_target[k] = 1.0 / std::max(env.mean[k], floor);
+            t.inv_upper[k] = 1.0 / std::max(env.upper[k], floor);
+            t.inv_lower[k] = 1.0 / std::max(env.lower[k], floor);
         }
         t.target = env.mean;
         t.lower = env.lower;
@@ -101,6 +104,16 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     lo_ = b.lo;
     hi_x_ = b.hi.x;
     hi_y_ = b.hi.y;
+    if (domain.kind() == Domain::Kind::polygon) {
+        const DomainSource src = domain.source();
+        const auto world = [&](const Vec3& v) { return src.origin + (v - src.origin) * src.scale; };
+        const auto add_ring = [&](const std::vector<Vec3>& ring) {
+            for (size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++)
+                polygon_edges_.push_back({world(ring[j]), world(ring[k])});
+        };
+        add_ring(src.outer);
+        for (const auto& hole : src.holes) add_ring(hole);
+    }
     const double w = std::max(b.hi.x - b.lo.x, 1e-300), h = std::max(b.hi.y - b.lo.y, 1e-300);
     double cell = std::max(0.25 * (reach_max + kMaxMove * 2.0 * r_max), 1e-12 * std::max(w, h));
     const double max_cells = 4.0 * static_cast<double>(elems.size()) + 64.0;
@@ -109,6 +122,46 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     ny_ = static_cast<int>(std::floor(h / cell)) + 1;
     inv_cell_ = 1.0 / cell;
     cells_.assign(classes, std::vector<std::vector<CellEntry>>(static_cast<size_t>(nx_) * ny_));
+}
+
+int State::polygon_inside_count(const Vec3& p, double rho) const {
+    constexpr int kMaxCrossings = 64;
+    double angle[kMaxCrossings];
+    int n = 0;
+    for (const auto& [a, b] : polygon_edges_) {
+        const double dx = b.x - a.x, dy = b.y - a.y, fx = a.x - p.x, fy = a.y - p.y;
+        const double qa = dx * dx + dy * dy;
+        if (!(qa > 0.0)) continue;
+        const double qb = 2.0 * (fx * dx + fy * dy), qc = fx * fx + fy * fy - rho * rho;
+        const double disc = qb * qb - 4.0 * qa * qc;
+        if (disc < 0.0) continue;
+        const double root = std::sqrt(disc);
+        for (const double t : {(-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)}) {
+            if (t < 0.0 || t >= 1.0) continue;
+            if (n == kMaxCrossings) {  // a ring too detailed for the arcs: test the points
+                int inside = 0;
+                for (int k = 0; k < kCircleSamples; ++k)
+                    inside += domain.inside({p.x + rho * circle_cos_[k], p.y + rho * circle_sin_[k], 0.0});
+                return inside;
+            }
+            double theta = std::atan2(fy + t * dy, fx + t * dx);
+            if (theta < 0.0) theta += 2.0 * kPi;
+            angle[n++] = theta;
+        }
+    }
+    if (n == 0) return domain.inside({p.x + rho * circle_cos_[0], p.y + rho * circle_sin_[0], 0.0}) ? kCircleSamples : 0;
+    std::sort(angle, angle + n);
+    const double per_radian = kCircleSamples / (2.0 * kPi);
+    int inside = 0;
+    for (int k = 0; k < n; ++k) {
+        const double from = angle[k], to = k + 1 < n ? angle[k + 1] : angle[0] + 2.0 * kPi;
+        const int first = static_cast<int>(std::floor(from * per_radian - 0.5)) + 1;
+        const int last = static_cast<int>(std::ceil(to * per_radian - 0.5)) - 1;
+        if (last < first) continue;  // no point on this arc
+        const double middle = 0.5 * (from + to);
+        if (domain.inside({p.x + rho * std::cos(middle), p.y + rho * std::sin(middle), 0.0})) inside += last - first + 1;
+    }
+    return inside;
 }
 
 void State::fractions_at(const Vec3& q, double* out) const {

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "pcf/pair_distance.hpp"
@@ -35,10 +36,11 @@
 namespace tessera::pcf {
 
 // Eq. 11 divides differences by the target value; where a target is (close to) 0 that
-// would divide by 0, so tessera divides by max(target, kTargetFloor) instead. PCFs are
-// density-normalised (1 = uncorrelated), so the floor says: an excess of 0.1 where the
-// exemplar has nothing counts as a 100% error.
-inline constexpr double kTargetFloor = 0.1;
+// would divide by 0, so tessera divides by max(target, floor) instead, with floor = 1% of
+// the value an uncorrelated distribution has (the PCF of Eq. 2 with the ring width
+// step * r_max is 1 / step there): an excess of 1% of that where the exemplar has nothing
+// counts as a 100% error.
+inline constexpr double kFloorShare = 0.01;
 
 // The distances of the refinement's trial moves, in units of r_max (section 3.1).
 inline constexpr double kTrialSteps[] = {1e-1, 1e-2, 1e-3, 1e-4, 1e-5};
@@ -51,7 +53,7 @@ struct Term {
     std::vector<double> norm;      // mean PCF = norm_k * sum_k (0 when the class pair has no pairs)
     std::vector<double> ind_norm;  // individual PCF = ind_norm_k / c_i(x_k) * sum_j k_sigma
     std::vector<double> target, lower, upper;
-    std::vector<double> inv_target, inv_upper;  // 1 / max(value, kTargetFloor)
+    std::vector<double> inv_target, inv_upper, inv_lower;  // 1 / max(value, floor)
     std::vector<double> sum;                    // the running sum of Eq. 2
     double base_max = 0.0;  // max_k (mean_k - target_k) * inv_target_k of the current state
     double reach = 0.0;     // Euclidean distance beyond which a pair of these classes is off the axis
@@ -90,6 +92,7 @@ public:
     Axis axis;
     int bins = 0;
     double r_max = 0.0, area = 0.0, x_limit = 0.0;
+    double floor = 0.0;                         // of the relative errors (kFloorShare / step)
     int kernel_max = 0;                         // most bins one pair touches
     std::vector<int> count;                     // output elements per class
     std::vector<Term> terms;                    // in model.pcfs order
@@ -184,12 +187,19 @@ public:
                 outside |= std::rotl((std::uint64_t{1} << n) - 1, start);
             }
             inside = kCircleSamples - std::popcount(outside);
+        } else if (!polygon_edges_.empty()) {
+            inside = polygon_inside_count(p, rho);
         } else {
             for (int k = 0; k < kCircleSamples; ++k)
                 inside += domain.inside({p.x + rho * circle_cos_[k], p.y + rho * circle_sin_[k], 0.0});
         }
         return std::max(inside, 1) / static_cast<double>(kCircleSamples);
     }
+    // For a polygon: the circle crosses the rings at a few angles; the arcs between them
+    // are wholly inside or outside (one test at each arc's middle), and the count is that
+    // of the 64 points on the inside arcs (the same as testing them, but for a point
+    // exactly on an edge).
+    int polygon_inside_count(const Vec3& p, double rho) const;
 
     // Calls f(index) for the entries of class c whose recorded position lies within
     // `radius` of p, until f returns false; returns false if stopped.
@@ -239,6 +249,7 @@ private:
 
     static constexpr int kCircleSamples = 64;  // as circle_inside_fraction
     double hi_x_ = 0.0, hi_y_ = 0.0;
+    std::vector<std::pair<Vec3, Vec3>> polygon_edges_;  // every ring's edges, world coordinates
     double circle_cos_[kCircleSamples] = {}, circle_sin_[kCircleSamples] = {};
     static constexpr int kKernelSteps = 1024;
     int kernel_half_ = 0, kernel_width_ = 0;  // table columns: bins -half .. +half around floor(x / step)
