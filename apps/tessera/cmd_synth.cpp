@@ -1,8 +1,9 @@
 // apps/tessera/cmd_synth.cpp — `tessera synth INPUT -o OUTPUT`: loads an exemplar,
-// builds the output domain (--scale or --domain), runs tessera::synthesize_det with
-// the DetOptions given as flags of the same names, prints progress to stderr, and
-// writes the output (data, a picture, or a scene of the elements' geometry) and an
-// optional --preview picture.
+// builds the output domain (--scale or --domain), runs tessera::synthesize_det (--method
+// det, the DetOptions given as flags of the same names) or tessera::synthesize_pcf
+// (--method pcf, the PcfSynthOptions likewise), prints progress to stderr, and writes the
+// output (data, a picture, or a scene of the elements' geometry) and an optional
+// --preview picture.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,9 +13,11 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "common.hpp"
+#include "tessera/pcf_synthesis.hpp"
 
 namespace tessera_cli {
 namespace {
@@ -41,10 +44,20 @@ struct SynthArgs {
     std::string method = "det";
     std::string search, matching;
     bool quiet = false;
-    tessera::DetOptions det;
+    tessera::DetOptions det;    // --seed, --threads and --iterations land here for both methods
+    tessera::PcfSynthOptions pcf;
+    CLI::App* command = nullptr;
     CLI::Option* scale_option = nullptr;
     CLI::Option* domain_option = nullptr;
 };
+
+// The flags that belong to one method only.
+const std::vector<std::string> det_only_flags = {
+    "--radius", "--k",       "--search",           "--matching", "--alpha",   "--lambda",        "--patch-size",
+    "--patch-candidates", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field"};
+const std::vector<std::string> pcf_only_flags = {"--max-fails",      "--grid-cells", "--epsilon0",
+                                                 "--epsilon-step",   "--convergence", "--outlier-rounds",
+                                                 "--sigma",          "--step",        "--extent"};
 
 // The text of --domain, checked for syntax before the input is loaded:
 // box:W,H[,D] (a size from the input's lower corner) or explicit corners.
@@ -216,8 +229,11 @@ tessera::Domain output_domain(const SynthArgs& args, const std::optional<DomainS
 // Checks every flag that does not need the input, naming the flag and its value.
 void check_options(SynthArgs& args) {
     const tessera::DetOptions& d = args.det;
-    if (args.method != "det")
-        fail_option("--method must be det (the only method so far), got '" + args.method + "'");
+    if (args.method != "det" && args.method != "pcf")
+        fail_option("--method must be det or pcf, got '" + args.method + "'");
+    const bool pcf = args.method == "pcf";
+    for (const std::string& flag : pcf ? det_only_flags : pcf_only_flags)
+        if (args.command->count(flag) > 0) fail_option(flag + " applies to --method " + (pcf ? "det" : "pcf") + " only");
     if (args.search == "kcoherence")
         args.det.search = tessera::SearchMode::kcoherence;
     else if (args.search == "exhaustive")
@@ -244,13 +260,37 @@ void check_options(SynthArgs& args) {
         fail_option("--patch-size must be > 0, or 0 for automatic; got " + format_number(d.patch_size));
     if (d.patch_candidates < 1)
         fail_option("--patch-candidates must be >= 1, got " + std::to_string(d.patch_candidates));
+
+    // --method pcf: the shared flags go into PcfSynthOptions; --iterations bounds the
+    // refinement sweeps per class (default 100 there).
+    tessera::PcfSynthOptions& p = args.pcf;
+    p.seed = d.seed;
+    p.threads = d.threads;
+    if (args.command->count("--iterations") > 0) p.max_iterations = d.iterations;
+    const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+    const auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+    if (p.max_fails < 0) fail_option("--max-fails must be >= 0, got " + std::to_string(p.max_fails));
+    if (p.grid_cells < 1 || p.grid_cells > 4096)
+        fail_option("--grid-cells must be from 1 to 4096, got " + std::to_string(p.grid_cells));
+    if (!non_negative(p.epsilon0)) fail_option("--epsilon0 must be a number >= 0, got " + format_number(p.epsilon0));
+    if (!non_negative(p.epsilon_step))
+        fail_option("--epsilon-step must be a number >= 0, got " + format_number(p.epsilon_step));
+    if (!non_negative(p.convergence))
+        fail_option("--convergence must be a number >= 0, got " + format_number(p.convergence));
+    if (p.outlier_rounds < 0) fail_option("--outlier-rounds must be >= 0, got " + std::to_string(p.outlier_rounds));
+    if (!positive(p.analysis.sigma)) fail_option("--sigma must be a number > 0, got " + format_number(p.analysis.sigma));
+    if (!positive(p.analysis.step)) fail_option("--step must be a number > 0, got " + format_number(p.analysis.step));
+    if (!positive(p.analysis.extent))
+        fail_option("--extent must be a number > 0, got " + format_number(p.analysis.extent));
 }
 
-tessera::Progress make_progress(bool quiet) {
-    return [quiet](const tessera::ProgressEvent& event) {
+// det: one line per iteration; pcf: one per refinement sweep (numbered over all classes,
+// out of at most --iterations per class).
+tessera::Progress make_progress(bool quiet, const char* unit) {
+    return [quiet, unit](const tessera::ProgressEvent& event) {
         if (!quiet && event.stage == "iteration") {
             char line[160];
-            std::snprintf(line, sizeof line, "iteration %d/%d  energy %.6g  elapsed %.2f s",
+            std::snprintf(line, sizeof line, "%s %d/%d  energy %.6g  elapsed %.2f s", unit,
                           event.iteration + 1, event.iterations, event.energy, event.elapsed_s);
             std::cerr << line << std::endl;
         }
@@ -288,18 +328,27 @@ void run_synth(SynthArgs& args) {
         v[axis[0] - 'x'] = negative ? -1.0 : 1.0;
         args.det.gravity = v;
     }
-    if (!args.quiet)
+    const bool pcf = args.method == "pcf";
+    if (!args.quiet) {
         std::cerr << "synth: " << exemplar.elements.size() << " elements in " << exemplar.domain.describe()
-                  << " -> " << domain.describe() << " (method det, seed " << args.det.seed << ", "
-                  << args.det.iterations << " iterations"
-                  << (args.det.field.active() ? ", field " + args.det.field.describe() : std::string()) << ")"
-                  << std::endl;
+                  << " -> " << domain.describe();
+        if (pcf)
+            std::cerr << " (method pcf, seed " << args.pcf.seed << ", at most " << args.pcf.max_iterations
+                      << " sweeps per class)" << std::endl;
+        else
+            std::cerr << " (method det, seed " << args.det.seed << ", " << args.det.iterations << " iterations"
+                      << (args.det.field.active() ? ", field " + args.det.field.describe() : std::string()) << ")"
+                      << std::endl;
+    }
 
     interrupted = 0;
     std::signal(SIGINT, on_interrupt);
     tessera::Arrangement result;
     try {
-        result = tessera::synthesize_det(exemplar, domain, args.det, make_progress(args.quiet));
+        if (pcf)
+            result = tessera::synthesize_pcf(exemplar, domain, args.pcf, make_progress(args.quiet, "sweep"));
+        else
+            result = tessera::synthesize_det(exemplar, domain, args.det, make_progress(args.quiet, "iteration"));
     } catch (const tessera::Cancelled&) {
         std::signal(SIGINT, SIG_DFL);
         throw tessera::Error(tessera::ErrorKind::cancelled, "interrupted; nothing was written");
@@ -317,6 +366,7 @@ void run_synth(SynthArgs& args) {
                   << std::endl;
         if (!scene.empty()) std::cerr << "scene: " << scene << std::endl;
         const tessera::RunStats& st = result.stats;
+        for (const std::string& note : st.notes) std::cerr << "synth: note: " << note << std::endl;
         if (st.physics) {
             std::snprintf(line, sizeof line,
                           "physics: interpenetrating pairs %d -> %d, deepest overlap %.4g -> %.4g, floating %d -> %d",
@@ -372,11 +422,13 @@ Subcommand add_synth_command(CLI::App& app) {
         ->type_name("FILE");
     add_meshes_option(*cmd, args->meshes);
     cmd->add_option("--method", args->method,
-                    "Synthesis method: det (neighbourhood matching, the only one so far).")
+                    "Synthesis method: det (neighbourhood matching, Discrete Element Textures) or pcf "
+                    "(2D disks from pair correlation functions, docs/pcf_synthesis.md).")
         ->capture_default_str();
     add_seed_option(*cmd, args->det.seed);
     cmd->add_option("--iterations", args->det.iterations,
-                    "Iterations of search + assignment (0 = the patch-copy initialization only).")
+                    "det: iterations of search + assignment (0 = the patch-copy initialization only). "
+                    "pcf: at most this many refinement sweeps per class (default 100; 0 = no refinement).")
         ->capture_default_str();
     cmd->add_option(
            "--radius", args->det.radius,
@@ -432,7 +484,38 @@ Subcommand add_synth_command(CLI::App& app) {
                     "follows the field. From files (docs/fields.md): grid:FILE.json (vectors at grid nodes, "
                     "interpolated) or mesh:FILE.ply|FILE.obj (3D, a direction per vertex). "
                     "Default: none (the exemplar's frame everywhere).");
+    // --method pcf: the fields of tessera::PcfSynthOptions.
+    cmd->add_option("--max-fails", args->pcf.max_fails,
+                    "pcf: successive rejected candidates after which a class's remaining elements are placed by "
+                    "grid search (>= 0; 0 = grid search from the start).")
+        ->capture_default_str();
+    cmd->add_option("--grid-cells", args->pcf.grid_cells,
+                    "pcf: cells of the grid search along the longer side of the domain (1 to 4096).")
+        ->capture_default_str();
+    cmd->add_option("--epsilon0", args->pcf.epsilon0,
+                    "pcf: error threshold of the first candidate of a class (Algorithm 1), >= 0.")
+        ->capture_default_str();
+    cmd->add_option("--epsilon-step", args->pcf.epsilon_step,
+                    "pcf: increase of the threshold with every successive rejection, >= 0.")
+        ->capture_default_str();
+    cmd->add_option("--convergence", args->pcf.convergence,
+                    "pcf: refinement stops when a sweep moves the elements by less than this x r_max in total, >= 0.")
+        ->capture_default_str();
+    cmd->add_option("--outlier-rounds", args->pcf.outlier_rounds,
+                    "pcf: rounds of re-placing elements whose individual PCFs leave the validity region, >= 0.")
+        ->capture_default_str();
+    cmd->add_option("--sigma", args->pcf.analysis.sigma,
+                    "pcf: width of the Gaussian kernel on the normalised distance axis, > 0.")
+        ->capture_default_str();
+    cmd->add_option("--step", args->pcf.analysis.step,
+                    "pcf: spacing of the PCF's values on the normalised distance axis, > 0.")
+        ->capture_default_str();
+    cmd->add_option("--extent", args->pcf.analysis.extent,
+                    "pcf: neighbourhood of the PCFs on the normalised axis (points up to extent, disks up to "
+                    "3 + extent), > 0.")
+        ->capture_default_str();
     add_quiet_option(*cmd, args->quiet);
+    args->command = cmd;
     return {cmd, [args] { run_synth(*args); }};
 }
 

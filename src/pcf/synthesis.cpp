@@ -168,8 +168,10 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     init.grid_cells = options.grid_cells;
     pcf::Scratch scratch(state);
 
-    // Progress: sweeps are numbered over the whole run; the plan is max_iterations per class.
-    const int planned = options.max_iterations * classes;
+    // Progress: sweeps are numbered over the whole run; the plan is the most there can be:
+    // max_iterations per class and a quarter of that per outlier round.
+    const int outlier_sweeps = options.max_iterations > 0 ? std::max(1, options.max_iterations / 4) : 0;
+    const int planned = (options.max_iterations + options.outlier_rounds * outlier_sweeps) * classes;
     int sweep_index = 0;
     double init_seconds = 0.0;
     auto sweep_start = Clock::now();
@@ -240,8 +242,7 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             const size_t energies = stats.energy.size();
             for (int i : elements) state.remove(i);
             run_init(c, elements, round);
-            const int sweeps = options.max_iterations > 0 ? std::max(1, options.max_iterations / 4) : 0;
-            const int bound_hit = run_refine(c, members, sweeps);
+            const int bound_hit = run_refine(c, members, outlier_sweeps);
             const double after = class_error();
             const std::string what = "outlier round " + std::to_string(round) + " of class '" + model.classes[c] +
                                      "': " + std::to_string(elements.size()) + " of " +

@@ -143,6 +143,23 @@ TEST_F(CliSynth, WritesJsonCsvPlyAndPreview) {
     }
 }
 
+TEST_F(CliSynth, PcfMethod) {
+    const tessera::Exemplar input = tessera::load(example("poisson_disk_2d.json"));
+    const Result r = run("synth " + q(example("poisson_disk_2d.json")) + " -o " + q(path("out.json")) +
+                         " --method pcf --scale 1.2 --iterations 3 --seed 2 --threads 2");
+    if (r.code == 70 && r.err.find("not part of this build") != std::string::npos)
+        GTEST_SKIP() << "the PCF analysis is not in this build";
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("(method pcf, seed 2, at most 3 sweeps per class)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("sweep 1/5  energy "), std::string::npos) << r.err;  // 3 + 2 outlier rounds of 1
+    EXPECT_NE(r.err.find("done: "), std::string::npos) << r.err;
+    const tessera::Exemplar output = tessera::load(path("out.json"));
+    expect_count_near(output.elements.size(), input.elements.size() * 1.2 * 1.2);
+    const auto json = nlohmann::json::parse(read_text(path("out.json")));
+    EXPECT_EQ(json["stats"]["method"], "pcf");
+    EXPECT_EQ(json["stats"]["seed"], 2);
+}
+
 TEST_F(CliSynth, ThreeDimensional) {
     const tessera::Exemplar input = tessera::load(example("spheres_3d.json"));
     const Result r = run("synth " + q(example("spheres_3d.json")) + " -o " + q(path("out.json")) +
@@ -501,7 +518,13 @@ const ErrorCase error_cases[] = {
     {"zero_k", "", "", synth_poisson + "--k 0", 2, {"--k"}},
     {"unknown_search", "", "", synth_poisson + "--search fast", 2, {"--search", "fast"}},
     {"unknown_matching", "", "", synth_poisson + "--matching best", 2, {"--matching", "best"}},
-    {"unknown_method", "", "", synth_poisson + "--method pcf", 2, {"--method", "pcf"}},
+    {"unknown_method", "", "", synth_poisson + "--method mcmc", 2, {"--method", "mcmc"}},
+    {"det_flag_with_pcf", "", "", synth_poisson + "--method pcf --k 3", 2, {"--k", "--method det"}},
+    {"pcf_flag_with_det", "", "", synth_poisson + "--max-fails 3", 2, {"--max-fails", "--method pcf"}},
+    {"pcf_zero_grid_cells", "", "", synth_poisson + "--method pcf --grid-cells 0", 2, {"--grid-cells", "0"}},
+    {"pcf_negative_max_fails", "", "", synth_poisson + "--method pcf --max-fails -1", 2, {"--max-fails"}},
+    {"pcf_zero_sigma", "", "", synth_poisson + "--method pcf --sigma 0", 2, {"--sigma"}},
+    {"pcf_negative_convergence", "", "", synth_poisson + "--method pcf --convergence -1", 2, {"--convergence"}},
     {"unknown_option", "", "", synth_poisson + "--colour red", 2, {"--colour"}},
     {"unknown_output_extension", "", "", "synth '{ex}poisson_disk_2d.json' -o '{work}/out.xyz'", 2,
      {"-o", "out.xyz", ".xyz"}},
