@@ -25,7 +25,7 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
         // The mean term can only grow from base_max (contributions are >= 0).
         if (std::max(E, std::max(T.base_max, 0.0)) > limit) return kInfinity;
         std::fill(R, R + bins, 0.0);
-        if (T.within) std::fill(D, D + bins, 0.0);
+        std::fill(D, D + bins, 0.0);  // stays 0 for a parent edge
         int tlo = bins, thi = -1;
         double a_run = T.base_max, b_run = 0.0;
         const bool complete = s.for_each_near(T.parent, p, T.reach, [&](int j) {

@@ -115,7 +115,8 @@ TEST(PcfSynth, CountsFollowTheDensityOnFourTimesTheArea) {
 
 TEST(PcfSynth, PoissonDiskExemplarKeepsItsHardCore) {
     const Exemplar ex = test::poisson_disk(150, 10.0, 0.6, 7);
-    const double min_in = *std::min_element(nearest(ex, 0, 0).begin(), nearest(ex, 0, 0).end());
+    const std::vector<double> nn_in = nearest(ex, 0, 0);
+    const double min_in = *std::min_element(nn_in.begin(), nn_in.end());
     const PcfModel model = test::reference_model(ex);
     const Arrangement out = synthesize_pcf(model, ex.domain.scaled(1.5), quick(4, 40));
     const std::vector<double> nn = nearest(out, 0, 0);
