@@ -16,8 +16,10 @@
 //     d = 0 -> x = 0. The Euclidean centre distance is kept for r_max and for the
 //     boundary correction, as the paper does.
 // The PCF of Eq. 2 in a domain W of area |W| for an ordered class pair (a, b):
-//   PCF_ab(x_k) = |W| / (A_k n_a n_b) * sum_{i in a, j in b, i != j} k_sigma(x_k - x_ij) / c_i(x_k)
-// with the ring area A_k = 2 pi x_k step r_max^2 (x_k >= step / 2), the paper's kernel
+//   PCF_ab(x_k) = |W| / (A_k n_a n_b) * sum_{i in a, j in b, i != j} step k_sigma(x_k - x_ij) / c_i(x_k)
+// with the ring area A_k = 2 pi x_k step r_max^2 (x_k >= step / 2) (step k_sigma is the
+// kernel's mass in a bin, so the sum counts neighbours in the ring and a uniform random
+// pattern gives PCF = 1), the paper's kernel
 // k_sigma(t) = exp(-t^2 / sigma^2) / (sqrt(pi) sigma), n_a n_b -> n_a (n_a - 1) when a == b,
 // and c_i(x) the fraction of the circle of Euclidean radius x r_max around P_i that lies in
 // W (the perimeter-fraction boundary correction of section 3.1). Individual PCFs (Eq. 3)
