@@ -82,7 +82,7 @@ std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, con
     const int blocks = std::clamp(n / 256 + 1, 1, 64);
     std::vector<BlockResult> results(blocks);
     core::parallel_for(blocks, core::resolve_threads(0), [&](int block_begin, int block_end, int) {
-        std::vector<double> acc(static_cast<size_t>(npairs) * bins), c(bins), individual(bins);
+        std::vector<double> acc(static_cast<size_t>(npairs) * bins), individual(bins);
         for (int block = block_begin; block < block_end; ++block) {
             BlockResult& r = results[block];
             r.sum.assign(static_cast<size_t>(npairs) * bins, 0.0);
@@ -97,20 +97,22 @@ std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, con
                 std::fill(acc.begin(), acc.end(), 0.0);
                 const double query = std::max(pair_reach(axis, r_max, ri, largest),
                                               has_points ? pair_reach(axis, r_max, ri, 0.0) : 0.0);
+                const double free = domain.distance_to_boundary(points.p[i]);
                 grid.for_each_within(points.p[i], query, [&](int j, double d2) {
                     if (j == i) return;
                     const int q = slot[child][points.cls[j]];
                     if (q < 0) return;
-                    const double x = disk_metric_normalised(std::sqrt(d2), ri, points.radius[j], r_max);
-                    add_kernel(axis, x, 1.0, acc.data() + static_cast<size_t>(q) * bins);
+                    const double d = std::sqrt(d2);
+                    const double x = disk_metric_normalised(d, ri, points.radius[j], r_max);
+                    if (x > axis.x_limit()) return;
+                    add_kernel(axis, x, boundary_weight(domain, points.p[i], free, d),
+                               acc.data() + static_cast<size_t>(q) * bins);
                 });
-                boundary_fractions(axis, domain, points.p[i], r_max, c.data());
                 for (int q = 0; q < npairs; ++q) {
                     if (pairs[q].child != child) continue;
                     const int parent = pairs[q].parent;
                     const double neighbours = count[parent] - (parent == child ? 1.0 : 0.0);
-                    normaliser.individual(acc.data() + static_cast<size_t>(q) * bins, c.data(), neighbours,
-                                          individual.data());
+                    normaliser.individual(acc.data() + static_cast<size_t>(q) * bins, neighbours, individual.data());
                     const size_t at = static_cast<size_t>(q) * bins;
                     for (int k = 0; k < bins; ++k) {
                         r.sum[at + k] += individual[k];

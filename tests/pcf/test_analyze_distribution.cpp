@@ -48,6 +48,35 @@ TEST(PcfAnalysis, PoissonPatternIsFlatAtOne) {
         }
 }
 
+TEST(PcfAnalysis, SmallWindowsAreCorrectedAtTheBoundary) {
+    // 100 points: the neighbourhood (5 r_max ~ 5.4) is half the window, so most rings are
+    // cut by the boundary; averaged over 20 patterns the corrected PCF stays at 1.
+    std::vector<double> sum;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        const PcfModel m = analyze_distribution(test::poisson_points(100, 10.0, seed));
+        sum.resize(m.x.size());
+        for (size_t k = 0; k < m.x.size(); ++k) sum[k] += m.pcfs[0].mean[k] / 20.0;
+        if (seed == 20) {
+            EXPECT_NEAR(mean_over(m, sum, 2.0, 5.0), 1.0, 0.05);
+            EXPECT_NEAR(mean_over(m, sum, 4.0, 5.0), 1.0, 0.08);
+        }
+    }
+}
+
+TEST(PcfAnalysis, RandomDisksFollowTheRingConvention) {
+    // Uniform random centres, equal radii r: beyond contact x = 3 + (d - 2 r) / r_max, so
+    // the ring of A_k = 2 pi x_k step r_max^2 holds (x - 3 + 2 r / r_max) / x times the
+    // neighbours of a centre-distance ring: the PCF tends to that, not to 1.
+    Exemplar ex = test::poisson_points(3000, 10.0, 21);
+    const double r_max = pcf_r_max(100.0, 3000), r = 0.3 * r_max;
+    for (Element& e : ex.elements) e.radius = r;
+    const PcfModel m = analyze_distribution(ex);
+    ASSERT_TRUE(m.disks);
+    std::vector<double> ratio(m.x.size());
+    for (size_t k = 0; k < m.x.size(); ++k) ratio[k] = m.pcfs[0].mean[k] / ((m.x[k] - 3.0 + 2.0 * r / r_max) / m.x[k]);
+    EXPECT_NEAR(mean_over(m, ratio, 4.5, 8.0), 1.0, 0.1);
+}
+
 TEST(PcfAnalysis, PoissonPatternInPolygonIsFlatAtOne) {
     // A 24-gon: the boundary correction (circle fractions) must hold beyond boxes.
     std::vector<Vec3> ring;
