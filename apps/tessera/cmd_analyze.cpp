@@ -16,7 +16,7 @@ namespace tessera_cli {
 namespace {
 
 struct AnalyzeArgs {
-    std::string input, model, plot, csv, input_domain;
+    std::string input, model, plot, csv, input_domain, compare;
     bool quiet = false, standard = false;
     tessera::PcfAnalysisSettings settings;
     tessera::PcfOptions pcf;
@@ -108,8 +108,14 @@ void run_model(const AnalyzeArgs& args) {
     // Everything is made before anything is written: a failure leaves no file behind.
     const std::string json = tessera::pcf_model_to_json(model);
     std::string picture;
+    tessera::PcfPlotOptions plot;
+    if (!args.compare.empty()) {
+        if (args.plot.empty()) fail_option("--compare needs --plot");
+        plot.measured = tessera::measure_distribution(model, load_input(args.compare, ""));
+    }
     if (!args.plot.empty())
-        picture = extension_of(args.plot) == ".png" ? tessera::pcf_plot_png(model) : tessera::pcf_plot_svg(model);
+        picture = extension_of(args.plot) == ".png" ? tessera::pcf_plot_png(model, plot)
+                                                    : tessera::pcf_plot_svg(model, plot);
 
     if (!args.quiet) {
         std::string classes;
@@ -149,6 +155,10 @@ Subcommand add_analyze_command(CLI::App& app) {
     args->plot_opt = cmd->add_option("--plot", args->plot,
                                      "Draw every PCF (mean line over the shaded envelope) to this .svg or .png.")
                          ->type_name("FILE");
+    cmd->add_option("--compare", args->compare,
+                    "With --plot: also draw the mean PCFs of this arrangement (e.g. a `synth --method pcf` "
+                    "output), measured on the model's axis, over the model's.")
+        ->type_name("FILE");
     args->sigma_opt = cmd->add_option("--sigma", args->settings.sigma,
                                       "Width of the Gaussian kernel on the normalised axis (> 0).")
                           ->capture_default_str();
