@@ -39,7 +39,7 @@ const char* to_string(tessera::SearchMode s) {
 }
 
 struct SynthArgs {
-    std::string input, output, preview, input_domain, domain, field, gravity, meshes = "auto";
+    std::string input, output, preview, input_domain, domain, field, gravity, boundary, meshes = "auto";
     double scale = 2.0;
     std::string method = "det";
     std::string search, matching;
@@ -54,7 +54,8 @@ struct SynthArgs {
 // The flags that belong to one method only.
 const std::vector<std::string> det_only_flags = {
     "--radius", "--k",       "--search",           "--matching", "--alpha",   "--lambda",        "--patch-size",
-    "--patch-candidates", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field"};
+    "--patch-candidates", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field",
+    "--boundary", "--boundary-distance"};
 const std::vector<std::string> pcf_only_flags = {"--max-fails",      "--grid-cells", "--epsilon0",
                                                  "--epsilon-step",   "--convergence", "--outlier-rounds",
                                                  "--sigma",          "--step",        "--extent"};
@@ -328,6 +329,20 @@ void run_synth(SynthArgs& args) {
         v[axis[0] - 'x'] = negative ? -1.0 : 1.0;
         args.det.gravity = v;
     }
+    if (!args.boundary.empty()) {
+        // A comma-separated list of sides: -x,+x,+z ...
+        std::size_t start = 0;
+        while (start <= args.boundary.size()) {
+            const std::size_t comma = args.boundary.find(',', start);
+            const std::string side = args.boundary.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            if (side.size() != 2 || (side[0] != '-' && side[0] != '+') || side[1] < 'x' || side[1] > 'z')
+                fail_option("--boundary: expected sides such as -x,+x,+y (an axis with its sign), got '" + side + "'");
+            args.det.boundary_sides.push_back({side[1] - 'x', side[0] == '-' ? -1 : 1});
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+        if (!(args.det.boundary_distance > 0.0)) fail_option("--boundary needs --boundary-distance D > 0");
+    }
     const bool pcf = args.method == "pcf";
     if (!args.quiet) {
         std::cerr << "synth: " << exemplar.elements.size() << " elements in " << exemplar.domain.describe()
@@ -475,6 +490,15 @@ Subcommand add_synth_command(CLI::App& app) {
                     "the domain boundary below them (and elements of types marked floor) are floor elements; "
                     "output floor elements copy only input floor elements and keep their elevation. "
                     "0 = only types marked floor.")
+        ->capture_default_str();
+    cmd->add_option("--boundary", args->boundary,
+                    "Constrained selection at other boundaries than the floor: sides such as -x,+x (walls) or +y "
+                    "(a ceiling). Elements within --boundary-distance of the domain's boundary on a listed side "
+                    "copy only input elements touching the same sides; interior elements only interior ones.")
+        ->type_name("SIDES");
+    cmd->add_option("--boundary-distance", args->det.boundary_distance,
+                    "Distance from a --boundary side within which an element touches it (data units, > 0 with "
+                    "--boundary).")
         ->capture_default_str();
     cmd->add_option("--field", args->field,
                     "Local orientation field of the output (Eq. 7): constant:DX,DY[,DZ] (one direction), "

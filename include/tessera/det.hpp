@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "tessera/domain.hpp"
 #include "tessera/exemplar.hpp"
@@ -61,6 +62,17 @@ struct DetOptions {
     // of types marked floor, are floor elements; output floor elements copy only
     // input floor elements and keep their elevation. 0 = only types marked floor.
     double floor_distance = 0.0;
+    // Constrained selection at other chosen boundaries (walls, a ceiling): elements whose
+    // samples lie within boundary_distance of the domain's boundary on one of these sides
+    // (each side an axis 0..2 and a direction -1 or +1: {0, -1} is the -x side) only copy
+    // input elements touching the same sides, and the others only elements touching none.
+    // Unlike floor elements their coordinates are not held. Empty or 0 = off.
+    struct BoundarySide {
+        int axis = 0;
+        int sign = -1;
+    };
+    std::vector<BoundarySide> boundary_sides;
+    double boundary_distance = 0.0;
     // Interleaved physics (section 5): after every search/assign iteration, a few
     // rigid-body steps (Bullet) resolve interpenetration and let elements settle.
     // physics_options.gravity zero = 9.81 m/s^2 along `gravity` (or its default).

@@ -16,14 +16,19 @@
 //     d = 0 -> x = 0. The Euclidean centre distance is kept for r_max and for the
 //     boundary correction, as the paper does.
 // The PCF of Eq. 2 in a domain W of area |W| for an ordered class pair (a, b):
-//   PCF_ab(x_k) = |W| / (A_k n_a n_b) * sum_{i in a, j in b, i != j} k_sigma(x_k - x_ij) / c_i(x_k)
-// with the ring area A_k = 2 pi x_k step r_max^2 (x_k >= step / 2), the paper's kernel
+//   PCF_ab(x_k) = |W| / (A_k n_a n_b) * sum_{i in a, j in b, i != j} step k_sigma(x_k - x_ij) / c_i(d_ij)
+// with the ring area A_k = 2 pi x_k step r_max^2 (x_k >= step / 2) (step k_sigma is the
+// kernel's mass in a bin, so the sum counts neighbours in the ring and a uniform random
+// point pattern gives PCF = 1; for disks, whose x beyond 3 is not a centre distance, it
+// tends to (x - 3 + (r1 + r2) / r_max) / x instead, as in the paper), the paper's kernel
 // k_sigma(t) = exp(-t^2 / sigma^2) / (sqrt(pi) sigma), n_a n_b -> n_a (n_a - 1) when a == b,
-// and c_i(x) the fraction of the circle of Euclidean radius x r_max around P_i that lies in
-// W (the perimeter-fraction boundary correction of section 3.1). Individual PCFs (Eq. 3)
-// are the same sum restricted to one reference element i (divided by n_b, not n_a n_b);
-// their lower and upper envelopes over the exemplar's elements bound the validity region
-// (section 5.1).
+// and c_i(d) the fraction of the circle of radius d around P_i that lies in W, at the
+// pair's Euclidean centre distance d_ij (the perimeter-fraction boundary correction of
+// section 3.1; for points it is the paper's per-ring weight c_i(x_k r_max) up to the
+// kernel's width). Individual PCFs (Eq. 3) are the same sum restricted to one reference
+// element i, divided by n_b (n_a - 1 when a == b) instead of n_a n_b, so the mean PCF is
+// their average; their lower and upper envelopes over the exemplar's elements bound the
+// validity region (section 5.1). src/pcf/pcf_accumulate.hpp holds this arithmetic.
 #pragma once
 
 #include <cstdint>

@@ -11,6 +11,8 @@
 #include "tessera/io.hpp"
 #include "tessera/mesh.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/pcf_plot.hpp"
+#include "tessera/pcf_synthesis.hpp"
 #include "tessera/physics.hpp"
 #include "tessera/progress.hpp"
 #include "tessera/render.hpp"

@@ -70,7 +70,7 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
     if (hold_floor) {
         a_gravity = a;
         for (int i = 0; i < n; ++i)
-            if (state.floor[i]) a_gravity.coeffRef(i, i) += params.floor_weight;
+            if (state.floor[i] & floor_bit) a_gravity.coeffRef(i, i) += params.floor_weight;
     }
 
     AssignReport report;
@@ -254,13 +254,37 @@ AssignReport assign_step(OutputState& state, const InputIndex& index, const Doma
         for (size_t e = 0; e < out.elements.size(); ++e)
             elevation[e] = element_elevation(out, out.elements[e], params.gravity);
     }
+    // Elements touching chosen boundary sides keep their distance to those sides the same
+    // way (the extreme sample's coordinate along each touched side's axis).
+    const auto& sides = params.boundary.sides;
+    std::vector<double> side_coordinate;
+    if (hold_floor && !sides.empty()) {
+        side_coordinate.assign(out.elements.size() * sides.size(), 0.0);
+        for (size_t e = 0; e < out.elements.size(); ++e)
+            for (size_t k = 0; k < sides.size(); ++k)
+                side_coordinate[e * sides.size() + k] =
+                    element_elevation(out, out.elements[e], Gravity{sides[k].axis, double(sides[k].sign)});
+    }
     AssignReport report = assign_positions(state, params, threads, &domain);
     assign_attributes(state, index, params, threads);
     snap_rigid_elements(state, index, params.dimension, threads);
+    if (hold_floor && !sides.empty()) {
+        for (size_t e = 0; e < out.elements.size(); ++e) {
+            const Element& el = out.elements[e];
+            const char code = state.floor[el.first_sample];
+            if (el.locked) continue;
+            for (size_t k = 0; k < sides.size(); ++k) {
+                if (!(code & (2 << k))) continue;
+                const Gravity side{sides[k].axis, double(sides[k].sign)};
+                const double shift = side_coordinate[e * sides.size() + k] - element_elevation(out, el, side);
+                for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p[side.axis] += shift;
+            }
+        }
+    }
     if (hold_floor) {
         for (size_t e = 0; e < out.elements.size(); ++e) {
             const Element& el = out.elements[e];
-            if (el.locked || !state.floor[el.first_sample]) continue;
+            if (el.locked || !(state.floor[el.first_sample] & floor_bit)) continue;
             const double shift = elevation[e] - element_elevation(out, el, params.gravity);
             for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p[params.gravity.axis] += shift;
         }

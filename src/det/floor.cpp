@@ -35,20 +35,28 @@ double element_elevation(const Exemplar& data, const Element& e, const Gravity& 
 }
 
 std::vector<char> floor_elements(const Exemplar& data, const Domain& domain, const Gravity& gravity,
-                                 double floor_distance) {
-    std::vector<char> floor(data.elements.size(), 0);
+                                 double floor_distance, const BoundarySides& boundary) {
+    std::vector<char> code(data.elements.size(), 0);
     const Vec3 step = gravity.vector() * floor_distance;
     for (size_t i = 0; i < data.elements.size(); ++i) {
         const Element& e = data.elements[i];
-        if (data.types[e.type].floor) {
-            floor[i] = 1;
-            continue;
+        bool floor = data.types[e.type].floor;
+        for (int s = 0; s < e.sample_count && !floor && floor_distance > 0.0; ++s)
+            floor = !domain.inside(data.samples[e.first_sample + s].p + step);
+        char c = floor ? floor_bit : 0;
+        if (boundary.distance > 0.0) {
+            for (size_t side = 0; side < boundary.sides.size(); ++side) {
+                Vec3 probe;
+                probe[boundary.sides[side].axis] = boundary.sides[side].sign * boundary.distance;
+                bool touches = false;
+                for (int s = 0; s < e.sample_count && !touches; ++s)
+                    touches = !domain.inside(data.samples[e.first_sample + s].p + probe);
+                if (touches) c = static_cast<char>(c | (2 << side));
+            }
         }
-        if (floor_distance <= 0.0) continue;
-        for (int s = 0; s < e.sample_count && !floor[i]; ++s)
-            floor[i] = !domain.inside(data.samples[e.first_sample + s].p + step);
+        code[i] = c;
     }
-    return floor;
+    return code;
 }
 
 }  // namespace tessera::det

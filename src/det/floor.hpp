@@ -12,6 +12,7 @@
 
 #include <vector>
 
+#include "tessera/det.hpp"
 #include "tessera/exemplar.hpp"
 
 namespace tessera::det {
@@ -28,9 +29,18 @@ struct Gravity {
 };
 Gravity resolve_gravity(const Vec3& gravity, int dimension);
 
-// Per element of `data`: is it a floor element in `domain`?
+// The boundary sides of constrained selection beyond the floor (DetOptions::boundary_sides).
+struct BoundarySides {
+    std::vector<DetOptions::BoundarySide> sides;
+    double distance = 0.0;
+};
+
+// Per element of `data`, its boundary class in `domain`: bit 0 (value 1) = a floor element
+// (its elevation is held), bit 1 + s = it touches chosen side s. Elements of different
+// classes never copy one another (constrained selection); 0 = an interior element.
 std::vector<char> floor_elements(const Exemplar& data, const Domain& domain, const Gravity& gravity,
-                                 double floor_distance);
+                                 double floor_distance, const BoundarySides& boundary = {});
+inline constexpr char floor_bit = 1;
 
 // Elevation of an element: its lowest sample's coordinate along gravity's axis
 // (lowest in the direction gravity points).

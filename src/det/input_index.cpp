@@ -67,7 +67,16 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
     if (!std::isfinite(options.floor_distance) || options.floor_distance < 0.0)
         bad("--floor-distance must be >= 0");
     p.floor_distance = options.floor_distance;
-    for (char f : floor_elements(exemplar, exemplar.domain, p.gravity, p.floor_distance)) p.floor_constraints |= f != 0;
+    if (!std::isfinite(options.boundary_distance) || options.boundary_distance < 0.0)
+        bad("--boundary-distance must be >= 0");
+    if (options.boundary_sides.size() > 6) bad("at most 6 boundary sides");
+    for (const auto& side : options.boundary_sides)
+        if (side.axis < 0 || side.axis >= exemplar.dimension || (side.sign != -1 && side.sign != 1))
+            bad("a boundary side must be -x, +x, -y, +y" + std::string(exemplar.dimension == 3 ? ", -z or +z" : ""));
+    p.boundary.sides = options.boundary_sides;
+    p.boundary.distance = options.boundary_sides.empty() ? 0.0 : options.boundary_distance;
+    for (char f : floor_elements(exemplar, exemplar.domain, p.gravity, p.floor_distance, p.boundary))
+        p.floor_constraints |= f != 0;
     return p;
 }
 
@@ -185,7 +194,7 @@ InputIndex build_input_index(const Exemplar& exemplar, const Params& params, int
         index.nb_start[i + 1] = static_cast<int>(index.nb.size());
     }
     const std::vector<char> floor_element =
-        floor_elements(exemplar, exemplar.domain, params.gravity, params.floor_distance);
+        floor_elements(exemplar, exemplar.domain, params.gravity, params.floor_distance, params.boundary);
     index.floor.resize(n);
     for (int i = 0; i < n; ++i) index.floor[i] = floor_element[index.element[i]];
     if (k > 0) build_similarity_sets(index, params, k, threads);

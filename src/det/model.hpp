@@ -38,7 +38,8 @@ struct Params {
     OrientationField field;    // local frames of the output (Eq. 7)
     Gravity gravity;           // down
     double floor_distance = 0.0;
-    bool floor_constraints = false;  // some exemplar element is a floor element
+    BoundarySides boundary;          // chosen sides beyond the floor (DetOptions::boundary_sides)
+    bool floor_constraints = false;  // some exemplar element is a floor or boundary element
     double floor_weight = 1e4;       // holds floor elevations in Eq. 4
 };
 

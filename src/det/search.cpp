@@ -71,7 +71,7 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
     state.floor.assign(n, 0);
     if (params.floor_constraints) {
         const std::vector<char> floor_element =
-            floor_elements(out, domain, params.gravity, params.floor_distance);
+            floor_elements(out, domain, params.gravity, params.floor_distance, params.boundary);
         for (int i = 0; i < n; ++i) state.floor[i] = floor_element[element[i]];
     }
     const bool use_frames = params.field.active();

@@ -245,7 +245,7 @@ private:
             const std::string where = "types[" + std::to_string(i) + "]";
             const Json& t = types[i];
             if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
-            check_keys(t, {"name", "rigid", "floor", "mesh", "reference"}, where);
+            check_keys(t, {"name", "rigid", "floor", "mesh", "reference", "depends_on"}, where);
             ElementType type;
             type.name = string(require(t, "name", where), member(where, "name"));
             if (type.name.empty()) fail(member(where, "name"), "must not be empty");
@@ -262,8 +262,33 @@ private:
                 for (size_t k = 0; k < points.size(); ++k)
                     type.reference.push_back(point(points[k], at + "[" + std::to_string(k) + "]"));
             }
+            if (t.contains("depends_on")) type.depends_on = depends_on(t["depends_on"], member(where, "depends_on"));
             ex.types.push_back(std::move(type));
         }
+        // Names may refer to types listed later, so they are checked once all are read.
+        for (size_t i = 0; i < ex.types.size(); ++i) {
+            if (!ex.types[i].depends_on) continue;
+            for (size_t k = 0; k < ex.types[i].depends_on->size(); ++k) {
+                const std::string& name = (*ex.types[i].depends_on)[k];
+                if (ex.find_type(name) < 0)
+                    fail("types[" + std::to_string(i) + "].depends_on[" + std::to_string(k) + "]",
+                         "type '" + ex.types[i].name + "' depends on unknown type '" + name + "'");
+            }
+        }
+    }
+
+    // The classes a type depends on in the PCF method's dependency graph
+    // (pcf_synthesis.hpp): an array of distinct type names, possibly empty.
+    std::vector<std::string> depends_on(const Json& value, const std::string& where) const {
+        const Json& names = array(value, where);
+        std::vector<std::string> out;
+        for (size_t k = 0; k < names.size(); ++k) {
+            const std::string at = where + "[" + std::to_string(k) + "]";
+            const std::string name = string(names[k], at);
+            if (std::find(out.begin(), out.end(), name) != out.end()) fail(at, "type '" + name + "' is named twice");
+            out.push_back(name);
+        }
+        return out;
     }
 
     void read_attribute_names(const Json& doc, Exemplar& ex) const {
@@ -551,6 +576,7 @@ std::string io_detail::to_json_with_mesh_paths(const Exemplar& data, const RunSt
             for (const Vec3& p : t.reference) reference.push_back(point_json(p, data.dimension));
             type["reference"] = std::move(reference);
         }
+        if (t.depends_on) type["depends_on"] = *t.depends_on;
         types.push_back(std::move(type));
     }
     std::vector<OrderedJson> elements;

@@ -65,3 +65,47 @@ TEST(DetFloor, GravityMustFollowAnAxis) {
     EXPECT_EQ(g.axis, 2);
     EXPECT_EQ(g.sign, -1.0);
 }
+
+// Constrained selection at a chosen wall (DetOptions::boundary_sides): a hedge of elements
+// along the exemplar's left wall (x = 0.3), a gap, then a jittered grid. With the -x side
+// chosen, the output's left wall is lined with hedge elements along its whole height, and
+// the interior keeps the gap; without it, interior elements end up against the wall too.
+namespace {
+Exemplar hedge_exemplar() {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    ex.type_index("dot");
+    const core::KeyedRng rng(5, core::Purpose::test);
+    for (int k = 0; k < 10; ++k) ex.add_element(0, {{0.3, 0.5 + k, 0}}, 0.2);
+    for (int i = 0; i < 9; ++i)
+        for (int k = 0; k < 10; ++k) {
+            const std::uint64_t c = 2 * static_cast<std::uint64_t>(i * 10 + k);
+            ex.add_element(0, {{1.5 + i + 0.1 * (rng.uniform(c) - 0.5), 0.5 + k + 0.1 * (rng.uniform(c + 1) - 0.5), 0}}, 0.2);
+        }
+    return ex;
+}
+}  // namespace
+
+TEST(DetBoundary, AChosenWallIsLinedWithTheExemplarsWallElements) {
+    const Exemplar ex = hedge_exemplar();
+    const Domain out_domain = Domain::box({0, 0, 0}, {20, 20, 0}, 2);
+    DetOptions o;
+    o.iterations = 5;
+    o.boundary_sides = {{0, -1}};
+    o.boundary_distance = 0.5;
+    const Arrangement out = synthesize_det(ex, out_domain, o);
+    int on_wall = 0, too_close = 0;
+    for (const auto& e : out.elements) {
+        if (e.position.x < 0.6) {
+            ++on_wall;
+            EXPECT_NEAR(e.position.x, 0.3, 0.15);
+        } else if (e.position.x < 1.1 && e.position.y > 0.5 && e.position.y < 19.5) {
+            ++too_close;  // inside the exemplar's gap next to the hedge
+        }
+    }
+    EXPECT_NEAR(on_wall, 20, 2);
+    EXPECT_LE(too_close, 1);
+    // Bad sides are option errors.
+    o.boundary_sides = {{2, -1}};
+    EXPECT_THROW(synthesize_det(ex, out_domain, o), Error);
+}

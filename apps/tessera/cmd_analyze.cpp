@@ -1,0 +1,188 @@
+// apps/tessera/cmd_analyze.cpp — `tessera analyze INPUT`: the analysis stage of the PCF
+// method (tessera::analyze_distribution, docs/pcf.md). Writes the model (-o model.json,
+// else stdout) and draws its PCFs (--plot FILE.svg|FILE.png). With --standard-pcf it
+// instead writes the standard pair correlation estimate (tessera::pair_correlation,
+// spatstat's convention in physical units) of every class pair as CSV.
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "common.hpp"
+#include "tessera/pcf_plot.hpp"
+#include "tessera/pcf_synthesis.hpp"
+
+namespace tessera_cli {
+namespace {
+
+struct AnalyzeArgs {
+    std::string input, model, plot, csv, input_domain, compare;
+    bool quiet = false, standard = false;
+    tessera::PcfAnalysisSettings settings;
+    tessera::PcfOptions pcf;
+    // Options that belong to one mode only, to reject them in the other.
+    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *sigma_opt = nullptr, *step_opt = nullptr,
+                *extent_opt = nullptr, *csv_opt = nullptr, *bandwidth_opt = nullptr, *rmax_opt = nullptr,
+                *bins_opt = nullptr;
+};
+
+void check_positive(double value, const std::string& flag) {
+    if (!(value > 0.0) || !std::isfinite(value)) fail_option(flag + " must be a number > 0, got " + format_number(value));
+}
+
+// A number as the shortest text that reads back exactly; "Inf" like R for g(0).
+std::string csv_number(double v) {
+    if (std::isinf(v)) return v > 0 ? "Inf" : "-Inf";
+    if (std::isnan(v)) return "NaN";
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
+}
+
+// A CSV field, quoted when it holds a comma, quote or line break (RFC 4180).
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+// Whether a CSV input names classes: its header has a "class" column (any case).
+bool csv_has_class_column(const std::string& path) {
+    const std::string text = tessera::read_file(path);
+    const std::string header = text.substr(0, text.find('\n'));
+    size_t start = 0;
+    while (start <= header.size()) {
+        size_t end = header.find(',', start);
+        if (end == std::string::npos) end = header.size();
+        std::string name = header.substr(start, end - start);
+        std::string lower;
+        for (char c : name)
+            if (c != ' ' && c != '\t' && c != '\r' && c != '"') lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (lower == "class") return true;
+        start = end + 1;
+    }
+    return false;
+}
+
+void run_standard(const AnalyzeArgs& args) {
+    for (const CLI::Option* o : {args.model_opt, args.plot_opt, args.sigma_opt, args.step_opt, args.extent_opt})
+        if (o->count() > 0) fail_option(o->get_name() + " cannot be used with --standard-pcf (which writes --csv)");
+    if (args.csv.empty()) fail_option("--standard-pcf needs --csv OUT.csv");
+    if (!std::isfinite(args.pcf.bandwidth) || args.pcf.bandwidth < 0.0)
+        fail_option("--bandwidth must be > 0, or 0 for automatic; got " + format_number(args.pcf.bandwidth));
+    if (!std::isfinite(args.pcf.r_max) || args.pcf.r_max < 0.0)
+        fail_option("--rmax must be > 0, or 0 for automatic; got " + format_number(args.pcf.r_max));
+    if (args.pcf.bins != 0 && args.pcf.bins < 2)
+        fail_option("--bins must be >= 2, or 0 for automatic; got " + std::to_string(args.pcf.bins));
+    check_output_path(args.csv, "--csv", {".csv"});
+
+    const tessera::Exemplar data = load_input(args.input, args.input_domain);
+    const tessera::PcfResult g = tessera::pair_correlation(data, args.pcf);
+    // Without a class column the single class has no name to report.
+    const bool named = extension_of(args.input) != ".csv" || csv_has_class_column(args.input);
+    std::string out = "r,class_a,class_b,g\n";
+    for (const tessera::PcfCurve& c : g.curves) {
+        const std::string a = named ? csv_field(c.name_a) : "", b = named ? csv_field(c.name_b) : "";
+        for (size_t k = 0; k < g.r.size(); ++k)
+            out += csv_number(g.r[k]) + "," + a + "," + b + "," + csv_number(c.g[k]) + "\n";
+    }
+    tessera::write_file_atomic(args.csv, out);
+    if (!args.quiet)
+        std::cerr << "analyze: pair correlation of " << g.curves.size() << " class pair(s), " << g.r.size()
+                  << " values of r up to " << format_number(g.r.back()) << ", bandwidth " << format_number(g.bandwidth)
+                  << "\nwrote " << args.csv << std::endl;
+}
+
+void run_model(const AnalyzeArgs& args) {
+    for (const CLI::Option* o : {args.csv_opt, args.bandwidth_opt, args.rmax_opt, args.bins_opt})
+        if (o->count() > 0) fail_option(o->get_name() + " needs --standard-pcf");
+    check_positive(args.settings.sigma, "--sigma");
+    check_positive(args.settings.step, "--step");
+    check_positive(args.settings.extent, "--extent");
+    if (!args.model.empty()) check_output_path(args.model, "-o", {".json"});
+    if (!args.plot.empty()) check_output_path(args.plot, "--plot", {".svg", ".png"});
+
+    const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
+    const tessera::PcfModel model = tessera::analyze_distribution(exemplar, args.settings);
+    // Everything is made before anything is written: a failure leaves no file behind.
+    const std::string json = tessera::pcf_model_to_json(model);
+    std::string picture;
+    tessera::PcfPlotOptions plot;
+    if (!args.compare.empty()) {
+        if (args.plot.empty()) fail_option("--compare needs --plot");
+        plot.measured = tessera::measure_distribution(model, load_input(args.compare, ""));
+    }
+    if (!args.plot.empty())
+        picture = extension_of(args.plot) == ".png" ? tessera::pcf_plot_png(model, plot)
+                                                    : tessera::pcf_plot_svg(model, plot);
+
+    if (!args.quiet) {
+        std::string classes;
+        for (size_t c = 0; c < model.classes.size(); ++c)
+            classes += (c ? ", " : "") + model.classes[c] + " " + std::to_string(model.counts[c]);
+        std::cerr << "analyze: " << model.classes.size() << " class(es) (" << classes << "), " << model.pcfs.size()
+                  << " PCF(s), " << (model.disks ? "disks" : "points") << ", r_max " << format_number(model.r_max)
+                  << ", x from 0 to " << format_number(model.x.back()) << std::endl;
+    }
+    if (!args.model.empty()) {
+        tessera::write_file_atomic(args.model, json);
+        if (!args.quiet) std::cerr << "wrote " << args.model << std::endl;
+    } else if (args.plot.empty()) {
+        std::cout << json << std::flush;
+    }
+    if (!args.plot.empty()) {
+        tessera::write_file_atomic(args.plot, picture);
+        if (!args.quiet) std::cerr << "wrote " << args.plot << std::endl;
+    }
+}
+
+}  // namespace
+
+Subcommand add_analyze_command(CLI::App& app) {
+    auto args = std::make_shared<AnalyzeArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "analyze",
+        "Analyse INPUT for the PCF method (Ecormier-Nocca et al. 2019): one pair correlation function per "
+        "class and per dependency (types' depends_on), with envelopes of the individual PCFs. Writes the "
+        "model as JSON (-o, else stdout) and draws it (--plot). With --standard-pcf, writes the standard "
+        "pair correlation g(r) of every class pair as CSV instead (docs/pcf.md).");
+    cmd->add_option("INPUT", args->input, "The exemplar (.json or .csv), 2D, one point per element.")
+        ->required()
+        ->type_name("FILE");
+    args->model_opt = add_output_option(*cmd, args->model, "Write the model to this .json file (default: stdout, "
+                                                           "unless --plot is given).", false);
+    args->plot_opt = cmd->add_option("--plot", args->plot,
+                                     "Draw every PCF (mean line over the shaded envelope) to this .svg or .png.")
+                         ->type_name("FILE");
+    cmd->add_option("--compare", args->compare,
+                    "With --plot: also draw the mean PCFs of this arrangement (e.g. a `synth --method pcf` "
+                    "output), measured on the model's axis, over the model's.")
+        ->type_name("FILE");
+    args->sigma_opt = cmd->add_option("--sigma", args->settings.sigma,
+                                      "Width of the Gaussian kernel on the normalised axis (> 0).")
+                          ->capture_default_str();
+    args->step_opt = cmd->add_option("--step", args->settings.step, "Spacing of the PCF's x values (> 0).")
+                         ->capture_default_str();
+    args->extent_opt = cmd->add_option("--extent", args->settings.extent,
+                                       "Neighbourhood: x up to EXTENT for points, 3 + EXTENT for disks (> 0).")
+                           ->capture_default_str();
+    cmd->add_flag("--standard-pcf", args->standard,
+                  "Write the standard estimate g(r) (spatstat's pcf: Gaussian kernel, translation edge "
+                  "correction, physical units) of every class pair to --csv instead of a model.");
+    args->csv_opt = cmd->add_option("--csv", args->csv, "With --standard-pcf: the .csv to write (r,class_a,class_b,g).")
+                        ->type_name("FILE");
+    args->bandwidth_opt = cmd->add_option("--bandwidth", args->pcf.bandwidth,
+                                          "With --standard-pcf: standard deviation of the kernel; 0 = rmax / 40.")
+                              ->capture_default_str();
+    args->rmax_opt = cmd->add_option("--rmax", args->pcf.r_max,
+                                     "With --standard-pcf: largest r; 0 = 5 x the mean nearest-neighbour distance.")
+                         ->capture_default_str();
+    args->bins_opt = cmd->add_option("--bins", args->pcf.bins, "With --standard-pcf: number of r values; 0 = 101.")
+                         ->capture_default_str();
+    add_input_domain_option(*cmd, args->input_domain, "INPUT");
+    add_quiet_option(*cmd, args->quiet);
+    return {cmd, [args] { args->standard ? run_standard(*args) : run_model(*args); }};
+}
+
+}  // namespace tessera_cli
