@@ -9,15 +9,11 @@
 
 namespace tessera::pcf {
 
-double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit,
-                       const double* inverse_table, Scratch& sc, int skip) {
+double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit, Scratch& sc) {
     const int bins = s.bins;
-    LazyInverse lazy;
-    if (!inverse_table) lazy = s.lazy_at(p, sc.inverse.data());
-    const auto inv = [&](int k) { return inverse_table ? inverse_table[k] : s.lazy_value(lazy, k); };
+    s.begin_profile(p, sc.profile);
     double* R = sc.near_sum.data();
     double* D = sc.near_ref.data();
-    double* kv = sc.kernel.data();
 
     double E = 0.0;
     for (int t : s.class_terms[c]) {
@@ -29,27 +25,27 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
         int tlo = bins, thi = -1;
         double a_run = T.base_max, b_run = 0.0;
         const bool complete = s.for_each_near(T.parent, p, T.reach, [&](int j) {
-            if (j == skip) return true;
             const Elem& o = s.elems[j];
-            const PairDistance pd = s.pair(p, r, o.p, o.r);
+            const double d = s.distance(p, o.p);
+            const PairDistance pd = s.pair(d, r, o.r);
             if (pd.x > s.x_limit) return true;
-            int lo = 0;
-            const int n = s.kernel(pd.x, lo, kv);
-            if (n == 0) return true;
-            const double* inv_j = &s.inverse[static_cast<size_t>(j) * bins];
-            for (int m = 0; m < n; ++m) {
-                R[lo + m] += kv[m];
-                if (T.within) D[lo + m] += kv[m] * inv_j[lo + m];
+            const State::Span sp = s.kernel_span(pd.x);
+            if (sp.n == 0) return true;
+            const double wi = s.weight(sc.profile, d);
+            const double wj = T.within ? s.weight(s.profiles[j], d) : 0.0;
+            for (int m = 0; m < sp.n; ++m) {
+                const double v = sp.value(m);
+                R[sp.lo + m] += wi * v;
+                D[sp.lo + m] += wj * v;
             }
-            tlo = std::min(tlo, lo);
-            thi = std::max(thi, lo + n - 1);
+            tlo = std::min(tlo, sp.lo);
+            thi = std::max(thi, sp.lo + sp.n - 1);
             if (limit < kInfinity) {
                 // Both the mean term and the upper-envelope term only grow as pairs are
                 // added: a lower bound of E that lets a hopeless candidate go early.
-                for (int k = lo; k < lo + n; ++k) {
-                    const double ik = inv(k);
-                    a_run = std::max(a_run, (T.norm[k] * (T.sum[k] + ik * R[k] + D[k]) - T.target[k]) * T.inv_target[k]);
-                    b_run = std::max(b_run, (T.ind_norm[k] * ik * R[k] - T.upper[k]) * T.inv_upper[k]);
+                for (int k = sp.lo; k < sp.lo + sp.n; ++k) {
+                    a_run = std::max(a_run, (T.norm[k] * (T.sum[k] + R[k] + D[k]) - T.target[k]) * T.inv_target[k]);
+                    b_run = std::max(b_run, (T.ind_norm[k] * R[k] - T.upper[k]) * T.inv_upper[k]);
                 }
                 if (std::max(E, std::max(a_run, 0.0) + b_run) > limit) return false;
             }
@@ -58,13 +54,13 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
         if (!complete) return kInfinity;
         double a_max = T.base_max;
         for (int k = tlo; k <= thi; ++k)
-            a_max = std::max(a_max, (T.norm[k] * (T.sum[k] + inv(k) * R[k] + D[k]) - T.target[k]) * T.inv_target[k]);
+            a_max = std::max(a_max, (T.norm[k] * (T.sum[k] + R[k] + D[k]) - T.target[k]) * T.inv_target[k]);
         // The lower envelope of a class's own PCF cannot be reached while the class is
         // still being placed: it counts only once the class is complete.
         const bool use_lower = !T.within || fill >= 1.0;
         double env = 0.0;
         for (int k = 0; k < bins; ++k) {
-            const double ind = R[k] != 0.0 ? T.ind_norm[k] * inv(k) * R[k] : 0.0;
+            const double ind = T.ind_norm[k] * R[k];
             env = std::max(env, (ind - T.upper[k]) * T.inv_upper[k]);
             if (use_lower) env = std::max(env, (T.lower[k] - ind) * T.inv_lower[k]);
         }
@@ -77,9 +73,8 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
 double envelope_violation(const State& s, int i, Scratch& sc) {
     const int bins = s.bins;
     const Elem& e = s.elems[i];
-    const double* inv_i = &s.inverse[static_cast<size_t>(i) * bins];
+    const CircleProfile& own = s.profiles[i];
     double* R = sc.near_sum.data();
-    double* kv = sc.kernel.data();
     double v = 0.0;
     for (int t : s.class_terms[e.cls]) {
         const Term& T = s.terms[t];
@@ -87,15 +82,16 @@ double envelope_violation(const State& s, int i, Scratch& sc) {
         s.for_each_near(T.parent, e.p, T.reach, [&](int j) {
             if (j == i) return true;
             const Elem& o = s.elems[j];
-            const PairDistance pd = s.pair(e.p, e.r, o.p, o.r);
+            const double d = s.distance(e.p, o.p);
+            const PairDistance pd = s.pair(d, e.r, o.r);
             if (pd.x > s.x_limit) return true;
-            int lo = 0;
-            const int n = s.kernel(pd.x, lo, kv);
-            for (int m = 0; m < n; ++m) R[lo + m] += kv[m];
+            const State::Span sp = s.kernel_span(pd.x);
+            const double w = s.weight(own, d);
+            for (int m = 0; m < sp.n; ++m) R[sp.lo + m] += w * sp.value(m);
             return true;
         });
         for (int k = 0; k < bins; ++k) {
-            const double ind = T.ind_norm[k] * inv_i[k] * R[k];
+            const double ind = T.ind_norm[k] * R[k];
             v = std::max(v, (ind - T.upper[k]) * T.inv_upper[k]);
             v = std::max(v, (T.lower[k] - ind) * T.inv_lower[k]);
         }
@@ -103,35 +99,7 @@ double envelope_violation(const State& s, int i, Scratch& sc) {
     return v;
 }
 
-namespace {
-
-// grid_cells cells along the longer side of the domain's bounds; the boundary
-// correction at every cell centre, computed in parallel once.
-void build_grid(const State& s, const InitSettings& st, SearchGrid& g) {
-    const Box b = s.domain.bounds();
-    const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
-    g.cell = std::max(w, h) / st.grid_cells;
-    g.nx = std::max(1, static_cast<int>(std::ceil(w / g.cell - 1e-9)));
-    g.ny = std::max(1, static_cast<int>(std::ceil(h / g.cell - 1e-9)));
-    const int cells = g.nx * g.ny;
-    g.inverse.assign(static_cast<size_t>(cells) * s.bins, 1.0);
-    core::parallel_for(cells, st.threads, [&](int begin, int end, int) {
-        for (int cell = begin; cell < end; ++cell) {
-            const Vec3 q{b.lo.x + (cell % g.nx + 0.5) * g.cell, b.lo.y + (cell / g.nx + 0.5) * g.cell, 0.0};
-            const double dist = s.domain.distance_to_boundary(q);
-            double* out = &g.inverse[static_cast<size_t>(cell) * s.bins];
-            for (int k = 0; k < s.bins; ++k) {
-                const double rho = s.axis.x(k) * s.r_max;
-                out[k] = rho <= dist ? 1.0 : 1.0 / s.inside_fraction(q, rho);
-            }
-        }
-    });
-    g.built = true;
-}
-
-}  // namespace
-
-InitReport initialise(State& s, int c, const std::vector<int>& elements, const InitSettings& st, SearchGrid& grid,
+InitReport initialise(State& s, int c, const std::vector<int>& elements, const InitSettings& st,
                       const std::function<void()>& tick) {
     InitReport report;
     if (elements.empty()) return report;
@@ -153,6 +121,11 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
         }
         return false;
     };
+    // The grid of the grid search (section 5.2): grid_cells cells along the longer side.
+    const double cell_size = std::max(w, h) / st.grid_cells;
+    const int nx = std::max(1, static_cast<int>(std::ceil(w / cell_size - 1e-9)));
+    const int ny = std::max(1, static_cast<int>(std::ceil(h / cell_size - 1e-9)));
+    const int cells = nx * ny;
 
     for (int i : elements) {
         const double r = s.elems[i].r;
@@ -166,9 +139,9 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
             }
             const double eps = st.epsilon0 + st.epsilon_step * fails;
             // Accept when E < eps: anything not below eps is rejected, so evaluation may stop there.
-            const double E = candidate_error(s, c, p, r, fill, std::nextafter(eps, -kInfinity), nullptr, scratch[0]);
+            const double E = candidate_error(s, c, p, r, fill, std::nextafter(eps, -kInfinity), scratch[0]);
             if (E < eps) {
-                s.insert(i, p);
+                s.insert(i, scratch[0].profile);
                 fails = 0;
                 placed = true;
                 break;
@@ -179,14 +152,12 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
             // Grid search: the error at a keyed random point of every cell, the lowest wins,
             // evaluated in parallel; each chunk stops evaluating a cell once it cannot equal
             // the chunk's best, which never changes the set of winners.
-            if (!grid.built) build_grid(s, st, grid);
-            const int cells = grid.nx * grid.ny;
             const core::KeyedRng jitter(st.seed, core::Purpose::pcf_grid, static_cast<std::uint64_t>(c),
                                         (static_cast<std::uint64_t>(st.round) << 32) | static_cast<std::uint64_t>(i));
             std::vector<double> error(cells, kInfinity);
             const auto point = [&](int cell) {
-                return Vec3{b.lo.x + (cell % grid.nx + jitter.uniform(2 * static_cast<std::uint64_t>(cell))) * grid.cell,
-                            b.lo.y + (cell / grid.nx + jitter.uniform(2 * static_cast<std::uint64_t>(cell) + 1)) * grid.cell,
+                return Vec3{b.lo.x + (cell % nx + jitter.uniform(2 * static_cast<std::uint64_t>(cell))) * cell_size,
+                            b.lo.y + (cell / nx + jitter.uniform(2 * static_cast<std::uint64_t>(cell) + 1)) * cell_size,
                             0.0};
             };
             core::parallel_for(cells, st.threads, [&](int begin, int end, int thread) {
@@ -194,8 +165,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
                 for (int cell = begin; cell < end; ++cell) {
                     const Vec3 p = point(cell);
                     if (!s.domain.inside(p)) continue;
-                    error[cell] = candidate_error(s, c, p, r, fill, best,
-                                                  &grid.inverse[static_cast<size_t>(cell) * s.bins], scratch[thread]);
+                    error[cell] = candidate_error(s, c, p, r, fill, best, scratch[thread]);
                     best = std::min(best, error[cell]);
                 }
             });
@@ -219,7 +189,8 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
                 if (!draw_inside(p)) p = s.domain.closest_inside(b.lo + (b.hi - b.lo) * 0.5);
                 ++report.by_fallback;
             }
-            s.insert(i, p);
+            s.begin_profile(p, scratch[0].profile);
+            s.insert(i, scratch[0].profile);
         }
         if (++since_tick == 64) {
             since_tick = 0;

@@ -1,7 +1,7 @@
 // PCF synthesis, refinement (Eq. 4 to 6): each element moves along the descent direction
 // of the error sum_k (PCF_k - target_k)^2 of its class's PCFs, by the one trial distance of
-// {1e-1, ..., 1e-5} r_max that lowers the error most (none if none does), tried from the
-// largest down and stopping at the first that does worse than an earlier improvement.
+// {1e-1, ..., 1e-5} r_max that lowers the error most (none if none does), searched from
+// the distance that worked for it last time.
 //
 // Parallel sweeps without changing results: the domain is cut into square tiles at least
 // half as wide as the reach of a pair within the class plus the largest moves, coloured
@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 
 #include "core/parallel.hpp"
@@ -30,76 +31,64 @@ struct Neighbour {
     int slot = 0;    // which of the class's terms
     int index = 0;   // the element
     double x = 0.0, slope = 0.0;
-    Vec3 unit;       // from the neighbour towards the element
+    double weight = 0.0;  // 1 / c_i(d) + 1 / c_j(d) (within a class) or 1 / c_i(d), now
+    Vec3 unit;            // from the neighbour towards the element
     State::Span span;
 };
 
 struct RefineScratch {
     std::vector<Neighbour> near;
     std::vector<double> old, trial, best;  // slots x bins: the element's share of the sums
-    std::vector<double> near_sum;          // slots x bins: its raw kernel sums (individual PCFs)
-    std::vector<double> lazy;              // bins: the correction at a trial position
+    std::vector<double> near_sum;          // slots x bins: its individual kernel sums
     std::vector<double> weight;            // slots x bins: (mean - target) * norm now
     std::vector<char> within;              // per slot
     std::vector<int> old_lo, old_hi, trial_lo, trial_hi, best_lo, best_hi;
+    CircleProfile profile, best_profile;   // boundary corrections at trial positions
 };
 
 // max over the class's PCFs and bins of (individual - upper) / max(upper, floor), >= 0.
-double upper_excess(const State& s, int c, const double* inv_i, const double* raw, const std::vector<int>& lo,
-                    const std::vector<int>& hi) {
+double upper_excess(const State& s, int c, const double* raw, const std::vector<int>& lo, const std::vector<int>& hi) {
     const std::vector<int>& ts = s.class_terms[c];
     double v = 0.0;
     for (size_t slot = 0; slot < ts.size(); ++slot) {
         const Term& T = s.terms[ts[slot]];
         const double* r = raw + slot * s.bins;
-        for (int k = lo[slot]; k <= hi[slot]; ++k)
-            v = std::max(v, (T.ind_norm[k] * inv_i[k] * r[k] - T.upper[k]) * T.inv_upper[k]);
+        for (int k = lo[slot]; k <= hi[slot]; ++k) v = std::max(v, (T.ind_norm[k] * r[k] - T.upper[k]) * T.inv_upper[k]);
     }
     return v;
 }
 
-// The pairs of element i at q (with its correction inv_i): their share of the sums into
-// `into`, their raw kernel sums into sc.near_sum (slots x bins); returns how far the
-// element's individual PCFs rise above the upper envelopes (Eq. 11's upper term).
-double pairs_at(const State& s, int c, const Vec3& q, double r, const double* inv_i, RefineScratch& sc,
-                std::vector<double>& into, std::vector<int>& lo_out, std::vector<int>& hi_out,
-                LazyInverse* lazy = nullptr) {
+// The pairs of an element of radius r at q (boundary correction `profile`): their share of
+// the sums into `into`, the element's individual kernel sums into sc.near_sum (slots x bins);
+// returns how far its individual PCFs rise above the upper envelopes (Eq. 11's upper term).
+double pairs_at(const State& s, int c, const Vec3& q, double r, CircleProfile& profile, RefineScratch& sc,
+                std::vector<double>& into, std::vector<int>& lo_out, std::vector<int>& hi_out) {
     const int bins = s.bins;
-    if (lazy) inv_i = lazy->values;  // the correction at q, filled in for the bins the pairs touch
     std::fill(into.begin(), into.end(), 0.0);
     std::fill(sc.near_sum.begin(), sc.near_sum.end(), 0.0);
     std::fill(lo_out.begin(), lo_out.end(), bins);
     std::fill(hi_out.begin(), hi_out.end(), -1);
     for (const Neighbour& nb : sc.near) {
         const Elem& o = s.elems[nb.index];
-        const PairDistance pd = s.pair(q, r, o.p, o.r);
+        const double d = s.distance(q, o.p);
+        const PairDistance pd = s.pair(d, r, o.r);
         if (pd.x > s.x_limit) continue;
         const State::Span sp = s.kernel_span(pd.x);
         if (sp.n == 0) continue;
-        if (lazy)
-            for (int m = 0; m < sp.n; ++m) s.lazy_value(*lazy, sp.lo + m);
+        const double wi = s.weight(profile, d);
+        const double w = sc.within[nb.slot] ? wi + s.weight(s.profiles[nb.index], d) : wi;
         const size_t at = static_cast<size_t>(nb.slot) * bins + sp.lo;
         double* acc = &into[at];
         double* raw = &sc.near_sum[at];
-        const double* ii = inv_i + sp.lo;
-        if (sc.within[nb.slot]) {
-            const double* ij = &s.inverse[static_cast<size_t>(nb.index) * bins + sp.lo];
-            for (int m = 0; m < sp.n; ++m) {
-                const double v = sp.value(m);
-                acc[m] += v * (ii[m] + ij[m]);
-                raw[m] += v;
-            }
-        } else {
-            for (int m = 0; m < sp.n; ++m) {
-                const double v = sp.value(m);
-                acc[m] += v * ii[m];
-                raw[m] += v;
-            }
+        for (int m = 0; m < sp.n; ++m) {
+            const double v = sp.value(m);
+            acc[m] += w * v;
+            raw[m] += wi * v;
         }
         lo_out[nb.slot] = std::min(lo_out[nb.slot], sp.lo);
         hi_out[nb.slot] = std::max(hi_out[nb.slot], sp.lo + sp.n - 1);
     }
-    return upper_excess(s, c, inv_i, sc.near_sum.data(), lo_out, hi_out);
+    return upper_excess(s, c, sc.near_sum.data(), lo_out, hi_out);
 }
 
 // Refines element i; `local` holds this tile's changes to the sums (slots x bins).
@@ -110,7 +99,7 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
     const int slots = static_cast<int>(ts.size());
     const int bins = s.bins;
     const double margin = 2.0 * kMaxMove * s.r_max;
-    double* inv_i = &s.inverse[static_cast<size_t>(i) * bins];
+    const CircleProfile& own = s.profiles[i];
 
     sc.near.clear();
     sc.within.resize(slots);
@@ -143,28 +132,21 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
         const Elem& o = s.elems[nb.index];
         const double dx = e.p.x - o.p.x, dy = e.p.y - o.p.y;
         const double d = std::sqrt(dx * dx + dy * dy);
-        const PairDistance pd = s.pair(e.p, e.r, o.p, o.r);
+        const PairDistance pd = s.pair(d, e.r, o.r);
         nb.x = pd.x;
         nb.slope = pd.slope;
         nb.unit = d > 0.0 ? Vec3{dx / d, dy / d, 0.0} : Vec3{};
         nb.span = pd.x > s.x_limit ? State::Span{} : s.kernel_span(pd.x);
         const State::Span& sp = nb.span;
         if (sp.n == 0) continue;
+        const double wi = s.weight(own, d);
+        nb.weight = sc.within[nb.slot] ? wi + s.weight(s.profiles[nb.index], d) : wi;
         const size_t at = static_cast<size_t>(nb.slot) * bins + sp.lo;
         double* old = &sc.old[at];
         double* raw = &sc.near_sum[at];
-        const double* ii = inv_i + sp.lo;
-        if (sc.within[nb.slot]) {
-            const double* ij = &s.inverse[static_cast<size_t>(nb.index) * bins + sp.lo];
-            for (int m = 0; m < sp.n; ++m) {
-                old[m] += sp.value(m) * (ii[m] + ij[m]);
-                raw[m] += sp.value(m);
-            }
-        } else {
-            for (int m = 0; m < sp.n; ++m) {
-                old[m] += sp.value(m) * ii[m];
-                raw[m] += sp.value(m);
-            }
+        for (int m = 0; m < sp.n; ++m) {
+            old[m] += nb.weight * sp.value(m);
+            raw[m] += wi * sp.value(m);
         }
         sc.old_lo[nb.slot] = std::min(sc.old_lo[nb.slot], sp.lo);
         sc.old_hi[nb.slot] = std::max(sc.old_hi[nb.slot], sp.lo + sp.n - 1);
@@ -172,7 +154,7 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
     // Variance-aware moves (section 5.1 applied to refinement): a move may not lift the
     // element's individual PCFs further above their upper envelopes than they are now,
     // beyond kMoveTolerance, so that refinement does not push elements onto each other.
-    const double excess_limit = std::max(kMoveTolerance, upper_excess(s, e.cls, inv_i, sc.near_sum.data(), sc.old_lo, sc.old_hi));
+    const double excess_limit = std::max(kMoveTolerance, upper_excess(s, e.cls, sc.near_sum.data(), sc.old_lo, sc.old_hi));
     for (int slot = 0; slot < slots; ++slot) {
         const Term& T = s.terms[ts[slot]];
         const double* loc = local + static_cast<size_t>(slot) * bins;
@@ -180,38 +162,35 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
         for (int k = 0; k < bins; ++k) wgt[k] = (T.norm[k] * (T.sum[k] + loc[k]) - T.target[k]) * T.norm[k];
     }
     // dE/dP_i = sum_j dE/dx_ij * slope_ij * unit_ij, with (Eq. 6, constant factors dropped)
-    // dE/dx_ij ~ sum_k (PCF_k - target_k) norm_k (1/c_i + 1/c_j) k_sigma(x_k - x_ij) (x_k - x_ij).
+    // dE/dx_ij ~ sum_k (PCF_k - target_k) norm_k (1/c_i + 1/c_j) k_sigma(x_k - x_ij) (x_k - x_ij)
+    // (the corrections are steps in d, flat almost everywhere).
     Vec3 gradient;
     for (const Neighbour& nb : sc.near) {
         const State::Span& sp = nb.span;
         if (sp.n == 0 || nb.slope == 0.0) continue;
         const double* wgt = &sc.weight[static_cast<size_t>(nb.slot) * bins + sp.lo];
-        const double* ii = inv_i + sp.lo;
         const double t0 = s.axis.x(sp.lo) - nb.x;
         double w = 0.0;
-        if (sc.within[nb.slot]) {
-            const double* ij = &s.inverse[static_cast<size_t>(nb.index) * bins + sp.lo];
-            for (int m = 0; m < sp.n; ++m) w += wgt[m] * (ii[m] + ij[m]) * sp.value(m) * (t0 + m * s.axis.step);
-        } else {
-            for (int m = 0; m < sp.n; ++m) w += wgt[m] * ii[m] * sp.value(m) * (t0 + m * s.axis.step);
-        }
-        gradient += nb.unit * (w * nb.slope);
+        for (int m = 0; m < sp.n; ++m) w += wgt[m] * sp.value(m) * (t0 + m * s.axis.step);
+        gradient += nb.unit * (w * nb.weight * nb.slope);
     }
     const double length = norm(gradient);
     if (!(length > 0.0) || !std::isfinite(length)) return 0.0;
     const Vec3 direction = gradient * (-1.0 / length);
 
     // The trial moves; the single best one is kept. Each trial gets the boundary
-    // correction at its position (only the bins its pairs touch).
+    // correction at its position; a trial that leaves the domain or rises above the
+    // envelopes is not a candidate.
+    constexpr int kSteps = static_cast<int>(std::size(kTrialSteps));
     double best_change = 0.0, best_step = 0.0;
-    Vec3 best_p;
-    sc.lazy.resize(bins);
-    for (double step : kTrialSteps) {
+    int best_index = -1;
+    const auto trial = [&](int index) {
+        const double step = kTrialSteps[index];
         const Vec3 q = e.p + direction * (step * s.r_max);
-        if (!s.domain.inside(q)) continue;
-        LazyInverse lazy = s.lazy_at(q, sc.lazy.data());
-        const double excess = pairs_at(s, e.cls, q, e.r, inv_i, sc, sc.trial, sc.trial_lo, sc.trial_hi, &lazy);
-        if (excess > excess_limit) continue;
+        if (!s.domain.inside(q)) return kInfinity;
+        s.begin_profile(q, sc.profile);
+        const double excess = pairs_at(s, e.cls, q, e.r, sc.profile, sc, sc.trial, sc.trial_lo, sc.trial_hi);
+        if (excess > excess_limit) return kInfinity;
         double change = 0.0;
         for (int slot = 0; slot < slots; ++slot) {
             const Term& T = s.terms[ts[slot]];
@@ -225,30 +204,47 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
                 change += next * next - now * now;
             }
         }
-        if (!(change < best_change)) {
-            // Trials go from the largest distance down; once one has lowered the error,
-            // a smaller one that does worse ends the search (along a line the error is
-            // close to a parabola, so the later ones would do worse still).
-            if (best_change < 0.0) break;
-            continue;
+        if (change < best_change) {
+            best_change = change;
+            best_step = step;
+            best_index = index;
+            std::swap(sc.trial, sc.best);
+            std::swap(sc.profile, sc.best_profile);
+            sc.best_lo = sc.trial_lo;
+            sc.best_hi = sc.trial_hi;
         }
-        best_change = change;
-        best_step = step;
-        best_p = q;
-        std::swap(sc.trial, sc.best);
-        sc.best_lo = sc.trial_lo;
-        sc.best_hi = sc.trial_hi;
+        return change;
+    };
+    // Along a line the error is close to a parabola in the distance, so over the trial
+    // distances it falls, then rises. The search starts at the distance that worked for
+    // this element last time and walks towards larger distances while they do better
+    // (if that one lowered the error) and towards smaller ones otherwise, stopping at the
+    // first that does worse than the best so far: the best trial, in about two or three.
+    const int start = e.hint;
+    if (trial(start) < 0.0) {
+        for (int k = start - 1; k >= 0 && best_index == k + 1; --k) trial(k);
+        if (best_index == start)
+            for (int k = start + 1; k < kSteps && best_index == k - 1; ++k) trial(k);
+    } else {
+        for (int k = start + 1; k < kSteps; ++k) {
+            const int before = best_index;
+            trial(k);
+            if (before >= 0 && best_index == before) break;  // past the best
+        }
     }
     if (best_step == 0.0) return 0.0;
+    e.hint = best_index;
 
-    e.p = best_p;
-    s.fractions_at(best_p, inv_i);
     for (int slot = 0; slot < slots; ++slot) {
         const size_t base = static_cast<size_t>(slot) * bins;
         const int lo = std::min(sc.old_lo[slot], sc.best_lo[slot]);
         const int hi = std::max(sc.old_hi[slot], sc.best_hi[slot]);
         for (int k = lo; k <= hi; ++k) local[base + k] += sc.best[base + k] - sc.old[base + k];
     }
+    // The new position with its correction (built: others read it as a neighbour's).
+    if (!sc.best_profile.built) s.build_profile(sc.best_profile);
+    e.p = sc.best_profile.p;
+    std::swap(s.profiles[i], sc.best_profile);
     return best_step * s.r_max;
 }
 

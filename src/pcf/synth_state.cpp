@@ -19,7 +19,6 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     r_max = model.r_max;
     area = domain.measure();
     x_limit = axis.x_limit();
-    floor = kFloorShare / axis.step;
     kernel_max = static_cast<int>(std::floor(2.0 * axis.reach() / axis.step)) + 2;
     kernel_half_ = static_cast<int>(std::ceil(axis.reach() / axis.step)) + 1;
     kernel_width_ = 2 * kernel_half_ + 1;
@@ -42,6 +41,7 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
         circle_cos_[k] = std::cos(a);
         circle_sin_[k] = std::sin(a);
     }
+    for (int n = 1; n <= kCircleSamples; ++n) inverse_count_[n] = static_cast<double>(kCircleSamples) / n;
 
     const int classes = static_cast<int>(model.classes.size());
     count.assign(classes, 0);
@@ -57,7 +57,7 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
             elems.push_back(e);
         }
     }
-    inverse.assign(elems.size() * bins, 1.0);
+    profiles.resize(elems.size());
 
     // Terms: normalisation, targets and reach.
     class_terms.assign(classes, {});
@@ -68,20 +68,20 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
         t.child = env.child;
         t.within = env.parent == env.child;
         const double n_child = count[t.child];
-        const double n_parent = count[t.parent];
-        const double pairs = n_child * (t.within ? n_parent - 1.0 : n_parent);
+        const double neighbours = t.within ? count[t.parent] - 1.0 : count[t.parent];  // possible, per reference
+        const double pairs = n_child * neighbours;
         t.norm.resize(bins);
         t.ind_norm.resize(bins);
         t.inv_target.resize(bins);
         t.inv_upper.resize(bins);
         t.inv_lower.resize(bins);
         for (int k = 0; k < bins; ++k) {
-            const double ring = axis.ring_area(k, r_max);
-            t.norm[k] = pairs > 0.0 ? area / (ring * pairs) : 0.0;
-            t.ind_norm[k] = n_parent > 0.0 ? area / (ring * n_parent) : 0.0;
-            t.inv_target[k] = 1.0 / std::max(env.mean[k], floor);
-            t.inv_upper[k] = 1.0 / std::max(env.upper[k], floor);
-            t.inv_lower[k] = 1.0 / std::max(env.lower[k], floor);
+            const double ring = axis.ring_area(k, r_max);  // |W| step / A_k: PcfNormaliser's factor
+            t.norm[k] = pairs > 0.0 ? area * axis.step / (ring * pairs) : 0.0;
+            t.ind_norm[k] = neighbours > 0.0 ? area * axis.step / (ring * neighbours) : 0.0;
+            t.inv_target[k] = 1.0 / std::max(env.mean[k], kFloor);
+            t.inv_upper[k] = 1.0 / std::max(env.upper[k], kFloor);
+            t.inv_lower[k] = 1.0 / std::max(env.lower[k], kFloor);
         }
         t.target = env.mean;
         t.lower = env.lower;
@@ -102,8 +102,6 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     // times the area of its disc), coarser if there would be too many.
     const Box b = domain.bounds();
     lo_ = b.lo;
-    hi_x_ = b.hi.x;
-    hi_y_ = b.hi.y;
     if (domain.kind() == Domain::Kind::polygon) {
         const DomainSource src = domain.source();
         const auto world = [&](const Vec3& v) { return src.origin + (v - src.origin) * src.scale; };
@@ -124,61 +122,62 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     cells_.assign(classes, std::vector<std::vector<CellEntry>>(static_cast<size_t>(nx_) * ny_));
 }
 
-int State::polygon_inside_count(const Vec3& p, double rho) const {
-    constexpr int kMaxCrossings = 64;
-    double angle[kMaxCrossings];
-    int n = 0;
-    for (const auto& [a, b] : polygon_edges_) {
-        const double dx = b.x - a.x, dy = b.y - a.y, fx = a.x - p.x, fy = a.y - p.y;
-        const double qa = dx * dx + dy * dy;
-        if (!(qa > 0.0)) continue;
-        const double qb = 2.0 * (fx * dx + fy * dy), qc = fx * fx + fy * fy - rho * rho;
-        const double disc = qb * qb - 4.0 * qa * qc;
-        if (disc < 0.0) continue;
-        const double root = std::sqrt(disc);
-        for (const double t : {(-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)}) {
-            if (t < 0.0 || t >= 1.0) continue;
-            if (n == kMaxCrossings) {  // a ring too detailed for the arcs: test the points
-                int inside = 0;
-                for (int k = 0; k < kCircleSamples; ++k)
-                    inside += domain.inside({p.x + rho * circle_cos_[k], p.y + rho * circle_sin_[k], 0.0});
-                return inside;
-            }
-            double theta = std::atan2(fy + t * dy, fx + t * dx);
-            if (theta < 0.0) theta += 2.0 * kPi;
-            angle[n++] = theta;
+void State::begin_profile(const Vec3& p, CircleProfile& out) const {
+    out.p = p;
+    out.free = domain.distance_to_boundary(p);
+    out.built = false;
+    out.sampled = false;
+}
+
+void State::build_profile(CircleProfile& out) const {
+    out.built = true;
+    out.at.clear();
+    out.inside.clear();
+    const Vec3& p = out.p;
+    if (domain.kind() == Domain::Kind::box) {
+        // Each point leaves the box once: at the nearest side along its direction.
+        const Box& b = domain.bounds();
+        for (int k = 0; k < kCircleSamples; ++k) {
+            const double c = circle_cos_[k], s = circle_sin_[k];
+            double t = std::numeric_limits<double>::infinity();
+            if (c > 0.0) t = std::min(t, (b.hi.x - p.x) / c);
+            if (c < 0.0) t = std::min(t, (b.lo.x - p.x) / c);
+            if (s > 0.0) t = std::min(t, (b.hi.y - p.y) / s);
+            if (s < 0.0) t = std::min(t, (b.lo.y - p.y) / s);
+            out.at.push_back(t);
         }
+        std::sort(out.at.begin(), out.at.end());
+        for (int m = 0; m < kCircleSamples; ++m) out.inside.push_back(kCircleSamples - 1 - m);
+        return;
     }
-    if (n == 0) return domain.inside({p.x + rho * circle_cos_[0], p.y + rho * circle_sin_[0], 0.0}) ? kCircleSamples : 0;
-    std::sort(angle, angle + n);
-    const double per_radian = kCircleSamples / (2.0 * kPi);
-    int inside = 0;
-    for (int k = 0; k < n; ++k) {
-        const double from = angle[k], to = k + 1 < n ? angle[k + 1] : angle[0] + 2.0 * kPi;
-        const int first = static_cast<int>(std::floor(from * per_radian - 0.5)) + 1;
-        const int last = static_cast<int>(std::ceil(to * per_radian - 0.5)) - 1;
-        if (last < first) continue;  // no point on this arc
-        const double middle = 0.5 * (from + to);
-        if (domain.inside({p.x + rho * std::cos(middle), p.y + rho * std::sin(middle), 0.0})) inside += last - first + 1;
+    if (polygon_edges_.empty()) {
+        out.sampled = true;
+        return;
     }
-    return inside;
-}
-
-void State::fractions_at(const Vec3& q, double* out) const {
-    const double dist = domain.distance_to_boundary(q);
-    for (int k = 0; k < bins; ++k) {
-        const double rho = axis.x(k) * r_max;
-        out[k] = rho <= dist ? 1.0 : 1.0 / inside_fraction(q, rho);
+    // A polygon: along each direction the crossings with the rings alternate leaving and
+    // entering (the position is inside).
+    std::vector<std::pair<double, int>> events;
+    std::vector<double> crossings;
+    for (int k = 0; k < kCircleSamples; ++k) {
+        const double ux = circle_cos_[k], uy = circle_sin_[k];
+        crossings.clear();
+        for (const auto& [a, b] : polygon_edges_) {
+            const double ex = b.x - a.x, ey = b.y - a.y, fx = a.x - p.x, fy = a.y - p.y;
+            const double denom = ux * ey - uy * ex;
+            if (denom == 0.0) continue;  // parallel
+            const double t = (fx * ey - fy * ex) / denom, s = (fx * uy - fy * ux) / denom;
+            if (t > 0.0 && s >= 0.0 && s < 1.0) crossings.push_back(t);
+        }
+        std::sort(crossings.begin(), crossings.end());
+        for (size_t m = 0; m < crossings.size(); ++m) events.push_back({crossings[m], m % 2 == 0 ? -1 : 1});
     }
-}
-
-LazyInverse State::lazy_at(const Vec3& p, double* storage) const {
-    LazyInverse lazy;
-    lazy.q = p;
-    lazy.dist = domain.distance_to_boundary(lazy.q);
-    lazy.values = storage;
-    std::fill(storage, storage + bins, 0.0);
-    return lazy;
+    std::sort(events.begin(), events.end());
+    int inside = kCircleSamples;
+    for (const auto& [t, delta] : events) {
+        inside += delta;
+        out.at.push_back(t);
+        out.inside.push_back(inside);
+    }
 }
 
 int State::cell_of(const Vec3& p) const {
@@ -189,36 +188,34 @@ int State::cell_of(const Vec3& p) const {
 
 void State::add_pairs(int i, double sign) {
     const Elem& e = elems[i];
-    const double* inv_i = &inverse[static_cast<size_t>(i) * bins];
-    std::vector<double> kv(kernel_max);
+    const CircleProfile& own = profiles[i];
     for (int t : class_terms[e.cls]) {
         Term& term = terms[t];
         for_each_near(term.parent, e.p, term.reach, [&](int j) {
             if (j == i) return true;
             const Elem& o = elems[j];
-            const PairDistance pd = pair(e.p, e.r, o.p, o.r);
+            const double d = distance(e.p, o.p);
+            const PairDistance pd = pair(d, e.r, o.r);
             if (pd.x > x_limit) return true;
-            int lo = 0;
-            const int n = kernel(pd.x, lo, kv.data());
-            const double* inv_j = &inverse[static_cast<size_t>(j) * bins];
-            for (int m = 0; m < n; ++m) {
-                const int k = lo + m;
-                term.sum[k] += sign * kv[m] * (term.within ? inv_i[k] + inv_j[k] : inv_i[k]);
-            }
+            const Span sp = kernel_span(pd.x);
+            const double w = weight(own, d) + (term.within ? weight(profiles[j], d) : 0.0);
+            for (int m = 0; m < sp.n; ++m) term.sum[sp.lo + m] += sign * w * sp.value(m);
             return true;
         });
         refresh(t);
     }
 }
 
-void State::insert(int i, const Vec3& p) {
+void State::insert(int i, CircleProfile& profile) {
     Elem& e = elems[i];
-    e.p = p;
-    fractions_at(p, &inverse[static_cast<size_t>(i) * bins]);
+    std::swap(profiles[i], profile);
+    // Others read it as a neighbour's, from several threads: it must not change lazily.
+    if (!profiles[i].built) build_profile(profiles[i]);
+    e.p = profiles[i].p;
     add_pairs(i, 1.0);
     e.placed = true;
-    e.cell = cell_of(p);
-    cells_[e.cls][e.cell].push_back({i, p.x, p.y});
+    e.cell = cell_of(e.p);
+    cells_[e.cls][e.cell].push_back({i, e.p.x, e.p.y});
     ++placed_[e.cls];
 }
 
@@ -240,8 +237,7 @@ State::Snapshot State::snapshot(int c) const {
     Snapshot snap;
     for (int i : members[c]) {
         snap.positions.push_back(elems[i].p);
-        const double* row = &inverse[static_cast<size_t>(i) * bins];
-        snap.inverse.insert(snap.inverse.end(), row, row + bins);
+        snap.profiles.push_back(profiles[i]);
     }
     for (int t : class_terms[c]) snap.sums.push_back(terms[t].sum);
     return snap;
@@ -251,7 +247,7 @@ void State::restore(int c, const Snapshot& snap) {
     for (size_t k = 0; k < members[c].size(); ++k) {
         const int i = members[c][k];
         elems[i].p = snap.positions[k];
-        std::copy_n(&snap.inverse[k * bins], bins, &inverse[static_cast<size_t>(i) * bins]);
+        profiles[i] = snap.profiles[k];
     }
     for (size_t k = 0; k < class_terms[c].size(); ++k) {
         terms[class_terms[c][k]].sum = snap.sums[k];
@@ -285,12 +281,6 @@ double State::term_error(int t) const {
         e += d * d;
     }
     return e;
-}
-
-double State::class_reach(int c) const {
-    double r = 0.0;
-    for (int t : class_terms[c]) r = std::max(r, terms[t].reach);
-    return r;
 }
 
 }  // namespace tessera::pcf

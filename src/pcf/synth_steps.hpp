@@ -14,12 +14,10 @@ namespace tessera::pcf {
 
 // Per-thread buffers of candidate evaluations.
 struct Scratch {
-    std::vector<double> near_sum;    // R_k: sum of kernel values of the candidate's pairs
-    std::vector<double> near_ref;    // D_k: the same with the neighbours as references (within a class)
-    std::vector<double> inverse;     // lazily computed 1 / c(x_k) of the candidate
-    std::vector<double> kernel;      // one pair's kernel values
-    explicit Scratch(const State& s)
-        : near_sum(s.bins), near_ref(s.bins), inverse(s.bins), kernel(s.kernel_max) {}
+    std::vector<double> near_sum;  // R_k: the candidate's pairs, kernels weighted by its correction
+    std::vector<double> near_ref;  // D_k: the same with the neighbours as references (within a class)
+    CircleProfile profile;         // the candidate's boundary correction
+    explicit Scratch(const State& s) : near_sum(s.bins), near_ref(s.bins) {}
 };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -29,22 +27,13 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // mean term plus the envelope term, the largest over the PCFs. `fill` is the share of
 // the class placed so far: below 1 the lower envelope of the class's own PCF is left out
 // (a partial class cannot reach it yet). Returns kInfinity as soon as E is known to
-// exceed `limit`. `inverse_table`: 1 / c(x_k) to use instead of the candidate's own.
-double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit,
-                       const double* inverse_table, Scratch& scratch, int skip = -1);
+// exceed `limit`. scratch.profile is left holding the candidate's boundary correction.
+double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit, Scratch& scratch);
 
 // How far element i's individual PCFs leave the validity region: the envelope term of
 // Eq. 11 over its class's PCFs, with every element placed.
 double envelope_violation(const State& s, int i, Scratch& scratch);
 
-// The grid of the grid search (section 5.2), with the boundary correction at each cell
-// centre, built on first use.
-struct SearchGrid {
-    int nx = 0, ny = 0;
-    double cell = 0.0;
-    std::vector<double> inverse;  // cells x bins
-    bool built = false;
-};
 
 struct InitSettings {
     std::uint64_t seed = 1;
@@ -64,7 +53,7 @@ struct InitReport {
 // then grid search once max_fails successive candidates were rejected. `tick` is called
 // on the calling thread every few placements (it may throw Cancelled).
 InitReport initialise(State& s, int c, const std::vector<int>& elements, const InitSettings& settings,
-                      SearchGrid& grid, const std::function<void()>& tick);
+                      const std::function<void()>& tick);
 
 struct RefineReport {
     int sweeps = 0;

@@ -158,7 +158,6 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     stats.radius = model.r_max;
 
     pcf::State state(model, domain, radii);
-    pcf::SearchGrid grid;
     pcf::InitSettings init;
     init.seed = options.seed;
     init.threads = threads;
@@ -185,7 +184,7 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     const auto run_init = [&](int c, const std::vector<int>& elements, int round) {
         const auto ti = Clock::now();
         init.round = round;
-        const pcf::InitReport r = pcf::initialise(state, c, elements, init, grid, tick);
+        const pcf::InitReport r = pcf::initialise(state, c, elements, init, tick);
         init_seconds += seconds_since(ti);
         stats.fallbacks += r.by_grid + r.by_fallback;
         const std::string name = "class '" + model.classes[c] + "'";

@@ -1,5 +1,5 @@
 // The arithmetic PCF synthesis is built on (src/pcf/pair_distance.hpp, synth_state.hpp):
-// the normalised pair distance, the kernel table and the box boundary correction.
+// the normalised pair distance, the kernel table and the boundary correction profiles.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +8,9 @@
 #include "pcf/pair_distance.hpp"
 #include "pcf/pcf_math.hpp"
 #include "pcf/synth_state.hpp"
-#include "pcf/synth_test_model.hpp"
+#include "pcf/disk_metric.hpp"
+#include "pcf/synth_test_data.hpp"
+#include "tessera/pcf_synthesis.hpp"
 
 using namespace tessera;
 
@@ -22,6 +24,14 @@ TEST(PcfSynthParts, PairDistanceMapsTheSalientConfigurations) {
     EXPECT_DOUBLE_EQ(pcf::normalised_pair_distance(r1, r2, r1, r_max), 2.0);  // radii in either order
     EXPECT_DOUBLE_EQ(pcf::normalised_pair_distance(1.5, 0.0, 0.0, r_max), 0.5);  // points
     EXPECT_DOUBLE_EQ(pcf::normalised_pair_distance(0.0, 1.0, 1.0, r_max), 0.0);  // equal radii, d = 0
+    // The library's disk metric and slope, in closed forms of their own.
+    for (double ra : {0.0, 0.5, 1.0, 2.0})
+        for (double rb : {0.0, 0.3, 1.0})
+            for (double d = 0.0; d < 8.0; d += 0.0173) {
+                const pcf::PairDistance pd = pcf::normalised_pair_distance_slope(d, ra, rb, r_max);
+                EXPECT_NEAR(pd.x, disk_metric_normalised(d, ra, rb, r_max), 1e-12) << d << " " << ra << " " << rb;
+                EXPECT_DOUBLE_EQ(pd.slope, pcf::disk_metric_slope(d, ra, rb, r_max)) << d << " " << ra << " " << rb;
+            }
     // Continuous and increasing in d, with the slope of its branch between the kinks.
     const double h = 0.01;
     for (double d = h; d < 6.0; d += h) {
@@ -35,43 +45,49 @@ TEST(PcfSynthParts, PairDistanceMapsTheSalientConfigurations) {
     }
 }
 
-TEST(PcfSynthParts, BoxBoundaryCorrectionCountsTheSameSamples) {
+namespace {
+
+// State::weight against 1 / circle_inside_fraction at random points and radii of a domain.
+void expect_same_correction(const Domain& domain, std::uint64_t seed) {
     const Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 3);
-    const PcfModel model = test::reference_model(ex);
-    const Domain box = Domain::box({1, 2, 0}, {7, 5, 0}, 2);
-    const pcf::State state(model, box, {std::vector<double>(5, 0.0)});
-    const core::KeyedRng rng(5, core::Purpose::test);
-    for (int i = 0; i < 20000; ++i) {
-        const Vec3 p{1.0 + 6.0 * rng.uniform(3 * i), 2.0 + 3.0 * rng.uniform(3 * i + 1), 0.0};
-        const double rho = 8.0 * rng.uniform(3 * i + 2);
-        ASSERT_EQ(state.inside_fraction(p, rho), pcf::circle_inside_fraction(box, p, rho))
-            << "at (" << p.x << ", " << p.y << "), radius " << rho;
+    const PcfModel model = analyze_distribution(ex);
+    const pcf::State state(model, domain, {std::vector<double>(5, 0.0)});
+    const core::KeyedRng rng(seed, core::Purpose::test);
+    const Box b = domain.bounds();
+    int tested = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3 p{b.lo.x + (b.hi.x - b.lo.x) * rng.uniform(2 * i), b.lo.y + (b.hi.y - b.lo.y) * rng.uniform(2 * i + 1), 0.0};
+        if (!domain.inside(p)) continue;
+        pcf::CircleProfile profile;
+        state.begin_profile(p, profile);
+        state.build_profile(profile);
+        for (int k = 0; k < 10; ++k) {
+            const double d = 12.0 * rng.uniform(100000 + 10 * i + k);
+            ++tested;
+            ASSERT_EQ(state.weight(static_cast<const pcf::CircleProfile&>(profile), d),
+                      1.0 / pcf::circle_inside_fraction(domain, p, d))
+                << "at (" << p.x << ", " << p.y << "), radius " << d;
+        }
     }
+    EXPECT_GT(tested, 10000);
+}
+
+}  // namespace
+
+TEST(PcfSynthParts, BoxBoundaryCorrectionCountsTheSameSamples) {
+    expect_same_correction(Domain::box({1, 2, 0}, {7, 5, 0}, 2), 5);
 }
 
 TEST(PcfSynthParts, PolygonBoundaryCorrectionCountsTheSameSamples) {
-    const Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 3);
-    const PcfModel model = test::reference_model(ex);
     const Domain shape =
         Domain::polygon({{0, 0, 0}, {14, 0, 0}, {14, 6, 0}, {6, 6, 0}, {6, 14, 0}, {0, 14, 0}}, {{{2, 2, 0}, {4, 2, 0}, {3, 4, 0}}})
             .scaled(1.3);
-    const pcf::State state(model, shape, {std::vector<double>(5, 0.0)});
-    const core::KeyedRng rng(6, core::Purpose::test);
-    int tested = 0;
-    for (int i = 0; i < 20000; ++i) {
-        const Vec3 p{19.0 * rng.uniform(3 * i), 19.0 * rng.uniform(3 * i + 1), 0.0};
-        if (!shape.inside(p)) continue;
-        const double rho = 12.0 * rng.uniform(3 * i + 2);
-        ++tested;
-        ASSERT_EQ(state.inside_fraction(p, rho), pcf::circle_inside_fraction(shape, p, rho))
-            << "at (" << p.x << ", " << p.y << "), radius " << rho;
-    }
-    EXPECT_GT(tested, 5000);
+    expect_same_correction(shape, 6);
 }
 
 TEST(PcfSynthParts, KernelTableFollowsTheKernel) {
     const Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 3);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const pcf::State state(model, ex.domain, {std::vector<double>(5, 0.0)});
     std::vector<double> values(state.kernel_max);
     for (double x = 0.0; x < state.x_limit; x += 0.0137) {

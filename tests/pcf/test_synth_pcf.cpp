@@ -1,6 +1,6 @@
-// PCF synthesis end to end (synthesize_pcf on models from the reference analysis in
-// synth_test_model.hpp): determinism, counts, radii, the hard core of a Poisson-disk
-// exemplar, a clustered class, polygon domains, fallbacks, bounds and errors.
+// PCF synthesis end to end (synthesize_pcf on models from analyze_distribution):
+// determinism, counts, radii, the hard core of a Poisson-disk exemplar, a clustered
+// class, polygon domains, fallbacks, bounds and errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "core/rng.hpp"
-#include "pcf/synth_test_model.hpp"
+#include "pcf/pcf_math.hpp"
+#include "pcf/synth_test_data.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -75,7 +76,7 @@ PcfSynthOptions quick(std::uint64_t seed, int iterations = 20) {
 
 TEST(PcfSynth, SameBytesForAnyThreadCount) {
     const Exemplar ex = clustered(3, 0.25, 0.1);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const Domain domain = ex.domain.scaled(1.2);
     std::string first;
     for (int threads : {1, 2, 3}) {
@@ -95,7 +96,7 @@ TEST(PcfSynth, SameBytesForAnyThreadCount) {
 
 TEST(PcfSynth, CountsFollowTheDensityOnFourTimesTheArea) {
     const Exemplar ex = clustered(5);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const Arrangement out = synthesize_pcf(model, ex.domain.scaled(2.0), quick(2, 5));
     ASSERT_EQ(out.types.size(), 2u);
     for (int c = 0; c < 2; ++c) {
@@ -117,7 +118,7 @@ TEST(PcfSynth, PoissonDiskExemplarKeepsItsHardCore) {
     const Exemplar ex = test::poisson_disk(150, 10.0, 0.6, 7);
     const std::vector<double> nn_in = nearest(ex, 0, 0);
     const double min_in = *std::min_element(nn_in.begin(), nn_in.end());
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const Arrangement out = synthesize_pcf(model, ex.domain.scaled(1.5), quick(4, 40));
     const std::vector<double> nn = nearest(out, 0, 0);
     const auto close = std::count_if(nn.begin(), nn.end(), [&](double d) { return d < 0.8 * min_in; });
@@ -126,7 +127,7 @@ TEST(PcfSynth, PoissonDiskExemplarKeepsItsHardCore) {
 
 TEST(PcfSynth, ClusteredClassStaysAroundItsParents) {
     const Exemplar ex = clustered(9);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const Arrangement out = synthesize_pcf(model, ex.domain.scaled(1.5), quick(6, 30));
     const double in = mean(nearest(ex, 1, 0)), got = mean(nearest(out, 1, 0));
     EXPECT_NEAR(got / in, 1.0, 0.15) << "input " << in << ", output " << got;
@@ -135,7 +136,7 @@ TEST(PcfSynth, ClusteredClassStaysAroundItsParents) {
 TEST(PcfSynth, RadiiAreDrawnFromTheExemplars) {
     Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 12);
     for (size_t i = 0; i < ex.elements.size(); ++i) ex.elements[i].radius = 0.1 + 0.01 * i;  // all different
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const Arrangement out = synthesize_pcf(model, ex.domain.scaled(1.6), quick(1, 3));
     std::map<double, int> uses;
     for (const Element& e : out.elements) ++uses[e.radius];
@@ -153,7 +154,7 @@ TEST(PcfSynth, RadiiAreDrawnFromTheExemplars) {
 
 TEST(PcfSynth, PolygonDomainHoldsEveryElement) {
     const Exemplar ex = test::poisson_disk(100, 10.0, 0.7, 4);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const Domain l_shape = Domain::polygon({{0, 0, 0}, {14, 0, 0}, {14, 6, 0}, {6, 6, 0}, {6, 14, 0}, {0, 14, 0}});
     const Arrangement out = synthesize_pcf(model, l_shape, quick(8, 10));
     ASSERT_FALSE(out.elements.empty());
@@ -163,7 +164,7 @@ TEST(PcfSynth, PolygonDomainHoldsEveryElement) {
 
 TEST(PcfSynth, GridSearchFallbackIsCountedAndNoted) {
     const Exemplar ex = test::poisson_disk(60, 10.0, 0.9, 2);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     PcfSynthOptions o = quick(3, 2);
     o.max_fails = 1;
     o.grid_cells = 16;
@@ -176,7 +177,7 @@ TEST(PcfSynth, GridSearchFallbackIsCountedAndNoted) {
 
 TEST(PcfSynth, RefinementBoundIsReported) {
     const Exemplar ex = test::poisson_disk(60, 10.0, 0.9, 2);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     PcfSynthOptions o = quick(3, 1);
     o.convergence = 0.0;
     o.outlier_rounds = 0;
@@ -191,7 +192,7 @@ TEST(PcfSynth, RefinementBoundIsReported) {
 
 TEST(PcfSynth, ProgressReportsAndCancels) {
     const Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 2);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     int sweeps = 0;
     const Arrangement out = synthesize_pcf(model, ex.domain, quick(1, 4), [&](const ProgressEvent& e) {
         sweeps += e.stage == "iteration";
@@ -204,7 +205,7 @@ TEST(PcfSynth, ProgressReportsAndCancels) {
 
 TEST(PcfSynth, BadOptionsNameTheField) {
     const Exemplar ex = test::poisson_disk(30, 10.0, 1.0, 2);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     const auto expect_option = [&](const PcfSynthOptions& o, const std::string& field) {
         try {
             synthesize_pcf(model, ex.domain, o);
@@ -242,7 +243,7 @@ TEST(PcfSynth, BadOptionsNameTheField) {
 
 TEST(PcfSynth, DomainErrors) {
     const Exemplar ex = clustered(2);
-    const PcfModel model = test::reference_model(ex);
+    const PcfModel model = analyze_distribution(ex);
     try {
         synthesize_pcf(model, Domain::box({0, 0, 0}, {0.5, 0.5, 0}, 2));
         ADD_FAILURE() << "a tiny domain was accepted";
