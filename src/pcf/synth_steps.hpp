@@ -22,8 +22,8 @@ struct Scratch {
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// E of Eq. 11 for an element of class c with radius r at p against the placed elements
-// (skipping element `skip`): per active PCF (the class's own and its parent edges) the
+// E of Eq. 11 for an element of class c with radius r at p against the placed elements:
+// per active PCF (the class's own and its parent edges) the
 // mean term plus the envelope term, the largest over the PCFs. `fill` is the share of
 // the class placed so far: below 1 the lower envelope of the class's own PCF is left out
 // (a partial class cannot reach it yet). Returns kInfinity as soon as E is known to
@@ -33,7 +33,6 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
 // How far element i's individual PCFs leave the validity region: the envelope term of
 // Eq. 11 over its class's PCFs, with every element placed.
 double envelope_violation(const State& s, int i, Scratch& scratch);
-
 
 struct InitSettings {
     std::uint64_t seed = 1;
@@ -46,7 +45,7 @@ struct InitSettings {
 
 struct InitReport {
     int by_grid = 0;      // elements placed by grid search
-    int by_fallback = 0;  // elements placed at a random point because no grid cell centre was inside
+    int by_fallback = 0;  // elements placed at a random point because no grid cell's point was inside
 };
 
 // Algorithm 1 for `elements` (unplaced, of class c, in placement order): dart throwing,
@@ -61,7 +60,7 @@ struct RefineReport {
 };
 
 // Refinement of `elements` (placed, of class c) by Eq. 4 to 6 against the class's PCFs,
-// at most max_iterations sweeps; on_sweep(energy, movement) after each one.
+// at most max_iterations sweeps; on_sweep(energy) after each one.
 RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence,
                     int threads, const std::function<void(double energy)>& on_sweep);
 
