@@ -5,7 +5,8 @@
 //   B3-dish   the dish (corn, carrot dice, 3-sample beans) filling a bowl mesh, ~2,000
 //             elements, interleaved physics on, 10 iterations
 //   B3-spaghetti  deformable 24-sample noodles filling a plate mesh, 10 iterations
-// Usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T]
+//   B4-*      the PCF method (pcf_scenarios.cpp): examples/pcf/ and shared real datasets
+// Usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]
 // Prints a Markdown table (median of repeated runs for the small scenarios).
 #include <algorithm>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "pcf_scenarios.hpp"
 #include "tessera/tessera.hpp"
 
 using namespace tessera;
@@ -44,10 +46,12 @@ int main(int argc, char** argv) {
     const std::string dir = argv[1];
     bool quick = false;
     int threads = 0;
+    std::string shared = dir + "/../../shared/data";
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--quick") quick = true;
         else if (a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
+        else if (a == "--shared" && i + 1 < argc) shared = argv[++i];
     }
     std::vector<Scenario> scenarios = {
         {"B1", "poisson_disk_2d.json", 1000, 5, false},
@@ -90,5 +94,6 @@ int main(int argc, char** argv) {
                     out.stats.final_energy, setup);
         std::fflush(stdout);
     }
+    tessera_bench::run_pcf_scenarios(dir, shared, threads);
     return 0;
 }
