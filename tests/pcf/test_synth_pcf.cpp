@@ -79,6 +79,8 @@ TEST(PcfSynth, SameBytesForAnyThreadCount) {
     const PcfModel model = analyze_distribution(ex);
     const Domain domain = ex.domain.scaled(1.2);
     std::string first;
+    std::vector<std::string> first_notes;
+    int first_fallbacks = -1;
     for (int threads : {1, 2, 3}) {
         PcfSynthOptions o = quick(11, 10);
         o.threads = threads;
@@ -86,10 +88,15 @@ TEST(PcfSynth, SameBytesForAnyThreadCount) {
         o.grid_cells = 24;
         const Arrangement out = synthesize_pcf(model, domain, o);
         const std::string text = to_json(out, &out.stats);
-        if (first.empty())
+        if (first.empty()) {
             first = text;
-        else
+            first_notes = out.stats.notes;
+            first_fallbacks = out.stats.fallbacks;
+        } else {
             EXPECT_EQ(text, first) << threads << " threads";
+            EXPECT_EQ(out.stats.notes, first_notes) << threads << " threads";
+            EXPECT_EQ(out.stats.fallbacks, first_fallbacks) << threads << " threads";
+        }
         EXPECT_EQ(out.stats.threads, threads);
     }
 }
