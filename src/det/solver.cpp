@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/parallel.hpp"
+#include "core/run_clock.hpp"
 #include "det/assign.hpp"
 #include "det/init.hpp"
 #include "det/input_index.hpp"
@@ -16,13 +17,9 @@ namespace tessera {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-void report(const Progress& progress, const ProgressEvent& event) {
-    if (progress && !progress(event)) throw Cancelled();
-}
+using core::Clock;
+using core::report;
+using core::seconds_since;
 
 }  // namespace
 

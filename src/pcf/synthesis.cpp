@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/parallel.hpp"
+#include "core/run_clock.hpp"
 #include "core/rng.hpp"
 #include "pcf/synth_steps.hpp"
 #include "tessera/error.hpp"
@@ -19,13 +20,9 @@ namespace tessera {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-void report(const Progress& progress, const ProgressEvent& event) {
-    if (progress && !progress(event)) throw Cancelled();
-}
+using core::Clock;
+using core::report;
+using core::seconds_since;
 
 // An element's individual PCF further outside the validity region than this (the
 // envelope term of Eq. 11: relative to the bound) makes it an outlier (section 6.4):
