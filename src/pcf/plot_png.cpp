@@ -38,17 +38,24 @@ void fill_rect(Canvas& canvas, double x0, double y0, double x1, double y1, Rgb c
     }
 }
 
+// `text` with every character outside printable ASCII replaced by '?': the font has no
+// other glyphs, and it indexes its table with the (signed) char, so a byte >= 128 would
+// read before the table.
+std::string printable(std::string text) {
+    for (char& c : text)
+        if (c < 32 || c > 126) c = '?';
+    return text;
+}
+
 // Width in pixels of `text` at `scale` (stb_easy_font units are pixels at scale 1).
 double text_width(const std::string& text, double scale) {
-    std::string copy = text;
+    std::string copy = printable(text);
     return scale * stb_easy_font_width(copy.data());
 }
 
-// Draws `text` with its top-left corner at (x, y). Characters outside printable ASCII
-// (which the font does not have) are drawn as '?'.
+// Draws `text` with its top-left corner at (x, y); non-ASCII characters as '?'.
 void draw_text(Canvas& canvas, std::string text, double x, double y, double scale, Rgb color) {
-    for (char& c : text)
-        if (c < 32 || c > 126) c = '?';
+    text = printable(text);
     std::vector<char> buffer(text.size() * 64 * 16 + 64);  // up to about 64 quads of 64 bytes per glyph
     const int quads = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(), static_cast<int>(buffer.size()));
     for (int q = 0; q < quads; ++q) {
