@@ -8,9 +8,11 @@
 //                                    f = 3 d + r1 - r2,  f_norm = 2 + (d - r1) / r2  in (1, 3];
 //   disjoint,    d > r1 + r2:        tessera's continuous fix of Eq. 10's third branch,
 //                                    x = 3 + (d - r1 - r2) / r_max.
-// The closed forms are what is evaluated: Eq. 10's f / (4 r1 - 4 r2) divides a difference
-// of nearly equal terms by a tiny number when the radii are close, the closed form does not.
+// The closed forms are what is evaluated (pcf/pair_distance.hpp, shared with synthesis):
+// Eq. 10's f / (4 r1 - 4 r2) divides a difference of nearly equal terms by a tiny number
+// when the radii are close, the closed form does not.
 #include "pcf/disk_metric.hpp"
+#include "pcf/pair_distance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,16 +31,9 @@ double disk_metric(double d, double ra, double rb) {
 }
 
 double disk_metric_normalised(double d, double ra, double rb, double r_max) {
-    const double r1 = std::max(ra, rb), r2 = std::min(ra, rb);
-    if (!(r1 > 0.0)) return d / r_max;  // two points: plain normalised distance
-    if (d <= r1 - r2) {
-        // Nested. Identical radii leave only d = 0: identical disks, metric 0.
-        if (!(r1 > r2)) return 0.0;
-        return std::min(1.0, 0.75 + 0.25 * d / (r1 - r2));
-    }
-    // Here r2 > 0: a point (r2 = 0) against a disk is either nested (d <= r1) or disjoint.
-    if (d <= r1 + r2) return 2.0 + (d - r1) / r2;
-    return 3.0 + (d - r1 - r2) / r_max;
+    // One expression for analysis and synthesis (pcf/pair_distance.hpp), so both place a
+    // pair at exactly the same x.
+    return pcf::normalised_pair_distance(d, ra, rb, r_max);
 }
 
 double pcf_r_max(double area, int n) {
@@ -51,11 +46,7 @@ double pcf_r_max(double area, int n) {
 namespace pcf {
 
 double disk_metric_slope(double d, double ra, double rb, double r_max) {
-    const double r1 = std::max(ra, rb), r2 = std::min(ra, rb);
-    if (!(r1 > 0.0)) return 1.0 / r_max;
-    if (d <= r1 - r2) return r1 > r2 ? 0.25 / (r1 - r2) : 0.0;
-    if (d <= r1 + r2) return 1.0 / r2;
-    return 1.0 / r_max;
+    return normalised_pair_distance_slope(d, ra, rb, r_max).slope;
 }
 
 }  // namespace pcf
