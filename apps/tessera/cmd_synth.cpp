@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "tessera/option_text.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace tessera_cli {
@@ -29,13 +30,6 @@ volatile std::sig_atomic_t interrupted = 0;
 extern "C" void on_interrupt(int) {
     interrupted = 1;
     std::signal(SIGINT, SIG_DFL);
-}
-
-const char* to_string(tessera::Matching m) {
-    return m == tessera::Matching::greedy ? "greedy" : "hungarian";
-}
-const char* to_string(tessera::SearchMode s) {
-    return s == tessera::SearchMode::kcoherence ? "kcoherence" : "exhaustive";
 }
 
 struct SynthArgs {
@@ -60,171 +54,9 @@ const std::vector<std::string> pcf_only_flags = {"--max-fails",      "--grid-cel
                                                  "--epsilon-step",   "--convergence", "--outlier-rounds",
                                                  "--sigma",          "--step",        "--extent"};
 
-// The text of --domain, checked for syntax before the input is loaded:
-// box:W,H[,D] (a size from the input's lower corner) or explicit corners.
-struct DomainSpec {
-    std::vector<double> size;            // W,H[,D] form
-    std::optional<tessera::Domain> box;  // corner form
-    std::string shape, argument;         // polygon:, mask:, mesh:, shell: forms (built after loading)
-};
-
-const char* const domain_usage =
-    "expected box:W,H[,D] (size from the input domain's lower corner), "
-    "box:xmin,ymin,xmax,ymax[,zmin,zmax] (corners), polygon:FILE.json, polygon:x1,y1,x2,y2,..., "
-    "mask:FILE.png[@xmin,ymin,xmax,ymax], mesh:FILE[,resolution] or shell:FILE,thickness[,resolution]";
-
-std::optional<double> parse_double(std::string text) {
-    const size_t first = text.find_first_not_of(" \t");
-    const size_t last = text.find_last_not_of(" \t");
-    if (first == std::string::npos) return std::nullopt;
-    text = text.substr(first, last - first + 1);
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size()) return std::nullopt;
-    return value;
-}
-
-// Splits "a,b,c" into numbers; nullopt if any field is not a number.
-std::optional<std::vector<double>> number_list(const std::string& text) {
-    std::vector<double> values;
-    size_t start = 0;
-    while (true) {
-        const size_t comma = text.find(',', start);
-        const auto value = parse_double(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-        if (!value) return std::nullopt;
-        values.push_back(*value);
-        if (comma == std::string::npos) return values;
-        start = comma + 1;
-    }
-}
-
-// The shaped forms (docs/cli.md): polygon:FILE.json | polygon:x1,y1,x2,y2,...,
-// mask:FILE.png[@xmin,ymin,xmax,ymax], mesh:FILE[,resolution], shell:FILE,thickness[,resolution].
-tessera::Domain shaped_domain(const SynthArgs& args, const DomainSpec& spec, const tessera::Exemplar& exemplar) {
-    const std::string& a = spec.argument;
-    const auto need = [&](int dimension) {
-        if (exemplar.dimension != dimension)
-            throw tessera::Error(tessera::ErrorKind::domain, "--domain " + args.domain + " is " + std::to_string(dimension) +
-                                                                 "D but " + args.input + " is " +
-                                                                 std::to_string(exemplar.dimension) + "D");
-    };
-    // FILE followed by ",numbers": the file name is everything before the first comma
-    // that starts a list of numbers.
-    const auto file_and_numbers = [&](std::string& file, std::vector<double>& numbers) {
-        file = a;
-        numbers.clear();
-        for (size_t comma = a.find(','); comma != std::string::npos; comma = a.find(',', comma + 1)) {
-            if (const auto list = number_list(a.substr(comma + 1))) {
-                file = a.substr(0, comma);
-                numbers = *list;
-                return;
-            }
-        }
-    };
-    if (spec.shape == "polygon") {
-        need(2);
-        if (a.size() > 5 && a.substr(a.size() - 5) == ".json") return tessera::load_domain_json(a, 2);
-        const auto values = number_list(a);
-        if (!values || values->size() < 6 || values->size() % 2 != 0)
-            fail_option("--domain: expected polygon:FILE.json or polygon:x1,y1,x2,y2,x3,y3,... (at least 3 points), got '" +
-                        args.domain + "'");
-        std::vector<tessera::Vec3> outer;
-        for (size_t i = 0; i < values->size(); i += 2) outer.push_back({(*values)[i], (*values)[i + 1], 0.0});
-        return tessera::Domain::polygon(outer);
-    }
-    if (spec.shape == "mask") {
-        need(2);
-        const size_t at = a.rfind('@');
-        if (at == std::string::npos) {
-            const tessera::Box b = exemplar.domain.scaled(args.scale).bounds();
-            return tessera::Domain::mask(a, b.lo, b.hi);
-        }
-        const tessera::Domain box = tessera::parse_box_domain(a.substr(at + 1), "--domain mask:FILE@");
-        if (box.dimension() != 2) fail_option("--domain: a mask box is xmin,ymin,xmax,ymax, got '" + args.domain + "'");
-        return tessera::Domain::mask(a.substr(0, at), box.bounds().lo, box.bounds().hi);
-    }
-    std::string file;
-    std::vector<double> numbers;
-    file_and_numbers(file, numbers);
-    need(3);
-    const auto resolution = [&](size_t index) {
-        if (numbers.size() <= index) return 128;
-        const double r = numbers[index];
-        if (r != std::floor(r) || r < 16 || r > 1024)
-            fail_option("--domain: the resolution must be an integer from 16 to 1024, got '" + args.domain + "'");
-        return static_cast<int>(r);
-    };
-    if (spec.shape == "mesh") {
-        if (numbers.size() > 1) fail_option("--domain: expected mesh:FILE[,resolution], got '" + args.domain + "'");
-        return tessera::Domain::mesh(file, resolution(0));
-    }
-    if (numbers.empty() || numbers.size() > 2 || !(numbers[0] > 0.0))
-        fail_option("--domain: expected shell:FILE,thickness[,resolution] with thickness > 0, got '" + args.domain + "'");
-    return tessera::Domain::shell(file, numbers[0], resolution(1));
-}
-
-DomainSpec parse_domain_spec(const std::string& text) {
-    for (const char* shape : {"polygon", "mask", "mesh", "shell"}) {
-        const std::string prefix = std::string(shape) + ":";
-        if (text.rfind(prefix, 0) == 0) {
-            DomainSpec spec;
-            spec.shape = shape;
-            spec.argument = text.substr(prefix.size());
-            if (spec.argument.empty()) fail_option("--domain: nothing after '" + prefix + "' in '" + text + "'");
-            return spec;
-        }
-    }
-    const std::string prefix = "box:";
-    if (text.rfind(prefix, 0) != 0)
-        fail_option("--domain: " + std::string(domain_usage) + ", got '" + text + "'");
-    const std::string numbers = text.substr(prefix.size());
-    std::vector<double> values;
-    size_t start = 0;
-    while (true) {
-        const size_t comma = numbers.find(',', start);
-        const std::string field =
-            numbers.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        const auto value = parse_double(field);
-        if (!value)
-            fail_option("--domain: '" + field + "' is not a number in '" + text + "'; " + domain_usage);
-        values.push_back(*value);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
-    DomainSpec spec;
-    if (values.size() == 4 || values.size() == 6) {
-        spec.box = tessera::parse_box_domain(numbers, "--domain");
-        return spec;
-    }
-    if (values.size() != 2 && values.size() != 3)
-        fail_option("--domain: " + std::string(domain_usage) + ", got " + std::to_string(values.size()) +
-                    " numbers in '" + text + "'");
-    for (size_t k = 0; k < values.size(); ++k)
-        if (!std::isfinite(values[k]) || !(values[k] > 0.0))
-            fail_option(std::string("--domain: the size along ") + "xyz"[k] + " must be a number > 0, got " +
-                        format_number(values[k]) + " in '" + text + "'");
-    spec.size = values;
-    return spec;
-}
-
-tessera::Domain output_domain(const SynthArgs& args, const std::optional<DomainSpec>& spec,
-                              const tessera::Exemplar& exemplar) {
-    if (!spec) return exemplar.domain.scaled(args.scale);
-    if (!spec->shape.empty()) return shaped_domain(args, *spec, exemplar);
-    const auto mismatch = [&](int dimension) {
-        throw tessera::Error(tessera::ErrorKind::domain,
-                             "--domain " + args.domain + " is " + std::to_string(dimension) + "D but " +
-                                 args.input + " is " + std::to_string(exemplar.dimension) + "D");
-    };
-    if (spec->box) {
-        if (spec->box->dimension() != exemplar.dimension) mismatch(spec->box->dimension());
-        return *spec->box;
-    }
-    const int dimension = static_cast<int>(spec->size.size());
-    if (dimension != exemplar.dimension) mismatch(dimension);
-    const tessera::Vec3 lo = exemplar.domain.bounds().lo;
-    const tessera::Vec3 size{spec->size[0], spec->size[1], dimension == 3 ? spec->size[2] : 0.0};
-    return tessera::Domain::box(lo, lo + size, dimension);
+tessera::Domain output_domain(const SynthArgs& args, const tessera::Exemplar& exemplar) {
+    if (args.domain_option->count() == 0) return exemplar.domain.scaled(args.scale);
+    return tessera::parse_output_domain(args.domain, exemplar, args.scale, "--domain");
 }
 
 // Checks every flag that does not need the input, naming the flag and its value.
@@ -235,18 +67,8 @@ void check_options(SynthArgs& args) {
     const bool pcf = args.method == "pcf";
     for (const std::string& flag : pcf ? det_only_flags : pcf_only_flags)
         if (args.command->count(flag) > 0) fail_option(flag + " applies to --method " + (pcf ? "det" : "pcf") + " only");
-    if (args.search == "kcoherence")
-        args.det.search = tessera::SearchMode::kcoherence;
-    else if (args.search == "exhaustive")
-        args.det.search = tessera::SearchMode::exhaustive;
-    else
-        fail_option("--search must be kcoherence or exhaustive, got '" + args.search + "'");
-    if (args.matching == "greedy")
-        args.det.matching = tessera::Matching::greedy;
-    else if (args.matching == "hungarian")
-        args.det.matching = tessera::Matching::hungarian;
-    else
-        fail_option("--matching must be greedy or hungarian, got '" + args.matching + "'");
+    args.det.search = tessera::parse_search_mode(args.search, "--search");
+    args.det.matching = tessera::parse_matching(args.matching, "--matching");
     if (!std::isfinite(args.scale) || !(args.scale > 0.0))
         fail_option("--scale must be a number > 0, got " + format_number(args.scale));
     if (d.iterations < 0) fail_option("--iterations must be >= 0, got " + std::to_string(d.iterations));
@@ -301,8 +123,7 @@ tessera::Progress make_progress(bool quiet, const char* unit) {
 
 void run_synth(SynthArgs& args) {
     check_options(args);
-    std::optional<DomainSpec> spec;
-    if (args.domain_option->count() > 0) spec = parse_domain_spec(args.domain);
+    if (args.domain_option->count() > 0) tessera::check_domain_spec(args.domain, "--domain");
     check_arrangement_output(args.output, "-o");
     if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
     tessera::RenderOptions preview_options;
@@ -315,32 +136,12 @@ void run_synth(SynthArgs& args) {
         !args.preview.empty() && preview_options.meshes != tessera::RenderOptions::Meshes::off &&
         std::any_of(exemplar.types.begin(), exemplar.types.end(), [](const auto& t) { return !t.mesh.empty(); });
     if (tessera::is_scene_path(args.output) || preview_meshes) tessera::build_scene(exemplar);
-    const tessera::Domain domain = output_domain(args, spec, exemplar);
+    const tessera::Domain domain = output_domain(args, exemplar);
     if (!args.quiet && !domain.notes().empty()) std::cerr << "synth: note: " << domain.notes() << std::endl;
     if (!args.field.empty()) args.det.field = tessera::OrientationField::parse(args.field, exemplar.dimension, "--field");
-    if (!args.gravity.empty()) {
-        // An axis with its sign: -z, +y, x, ...
-        const std::string& g = args.gravity;
-        const bool negative = g[0] == '-';
-        const std::string axis = (g[0] == '-' || g[0] == '+') ? g.substr(1) : g;
-        if (axis != "x" && axis != "y" && axis != "z")
-            fail_option("--gravity: expected an axis with its sign (-x, +x, -y, +y, -z, +z), got '" + g + "'");
-        tessera::Vec3 v;
-        v[axis[0] - 'x'] = negative ? -1.0 : 1.0;
-        args.det.gravity = v;
-    }
+    if (!args.gravity.empty()) args.det.gravity = tessera::parse_axis_direction(args.gravity, "--gravity");
     if (!args.boundary.empty()) {
-        // A comma-separated list of sides: -x,+x,+z ...
-        std::size_t start = 0;
-        while (start <= args.boundary.size()) {
-            const std::size_t comma = args.boundary.find(',', start);
-            const std::string side = args.boundary.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-            if (side.size() != 2 || (side[0] != '-' && side[0] != '+') || side[1] < 'x' || side[1] > 'z')
-                fail_option("--boundary: expected sides such as -x,+x,+y (an axis with its sign), got '" + side + "'");
-            args.det.boundary_sides.push_back({side[1] - 'x', side[0] == '-' ? -1 : 1});
-            if (comma == std::string::npos) break;
-            start = comma + 1;
-        }
+        args.det.boundary_sides = tessera::parse_boundary_sides(args.boundary, "--boundary");
         if (!(args.det.boundary_distance > 0.0)) fail_option("--boundary needs --boundary-distance D > 0");
     }
     const bool pcf = args.method == "pcf";
@@ -396,8 +197,8 @@ void run_synth(SynthArgs& args) {
 
 Subcommand add_synth_command(CLI::App& app) {
     auto args = std::make_shared<SynthArgs>();
-    args->search = to_string(args->det.search);
-    args->matching = to_string(args->det.matching);
+    args->search = tessera::to_string(args->det.search);
+    args->matching = tessera::to_string(args->det.matching);
     CLI::App* cmd = app.add_subcommand(
         "synth",
         "Synthesize an arrangement like the exemplar INPUT in a new domain and write it to OUTPUT. "
