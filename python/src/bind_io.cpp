@@ -1,0 +1,91 @@
+// Files, pictures and statistics for Python: load and save by extension (tessera/io.hpp),
+// scenes of the elements' geometry (tessera/geometry.hpp), preview pictures
+// (tessera/render.hpp), and the metrics of tessera/metrics.hpp.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "tessera/geometry.hpp"
+#include "tessera/io.hpp"
+#include "tessera/metrics.hpp"
+#include "tessera/render.hpp"
+
+namespace py = pybind11;
+
+namespace tessera_python {
+namespace {
+
+tessera::RenderOptions::Meshes meshes_option(const std::string& text) {
+    if (text == "auto") return tessera::RenderOptions::Meshes::automatic;
+    if (text == "on") return tessera::RenderOptions::Meshes::on;
+    if (text == "off") return tessera::RenderOptions::Meshes::off;
+    throw tessera::Error(tessera::ErrorKind::option, "meshes must be 'auto', 'on' or 'off', got '" + text + "'");
+}
+
+tessera::PcfOptions pcf_options(double r_max, double bandwidth, int bins) {
+    tessera::PcfOptions o;
+    o.r_max = r_max;
+    o.bandwidth = bandwidth;
+    o.bins = bins;
+    return o;
+}
+
+template <class Data>
+void save_data(const Data& data, const std::string& path) {
+    py::gil_scoped_release release;
+    if (tessera::is_scene_path(path))
+        tessera::write_scene(tessera::build_scene(data), path);
+    else
+        tessera::save(data, path);
+}
+
+}  // namespace
+
+void bind_io(py::module_& m) {
+    m.def(
+        "load",
+        [](const std::string& path, const py::object& input_domain) {
+            tessera::LoadOptions options;
+            if (!input_domain.is_none()) options.input_domain = input_domain.cast<tessera::Domain>();
+            py::gil_scoped_release release;
+            return tessera::load(path, options);
+        },
+        py::arg("path"), py::arg("input_domain"));
+    // Arrangement first: pybind11 tries overloads in order, and its JSON records the run statistics.
+    m.def("save", &save_data<tessera::Arrangement>, py::arg("data"), py::arg("path"));
+    m.def("save", &save_data<tessera::Exemplar>, py::arg("data"), py::arg("path"));
+    m.def(
+        "render",
+        [](const tessera::Exemplar& data, const std::string& path, int width, const std::string& meshes) {
+            tessera::RenderOptions options;
+            options.width = width;
+            options.meshes = meshes_option(meshes);
+            py::gil_scoped_release release;
+            tessera::render_to_file(data, path, options);
+        },
+        py::arg("data"), py::arg("path"), py::arg("width"), py::arg("meshes"));
+    m.def(
+        "metrics_report",
+        [](const tessera::Exemplar& exemplar, const tessera::Exemplar& output, double r_max, double bandwidth,
+           int bins) {
+            py::gil_scoped_release release;
+            return tessera::metrics_report_json(exemplar, output, pcf_options(r_max, bandwidth, bins));
+        },
+        py::arg("exemplar"), py::arg("output"), py::arg("r_max"), py::arg("bandwidth"), py::arg("bins"));
+    m.def(
+        "pair_correlation",
+        [](const tessera::Exemplar& data, double r_max, double bandwidth, int bins) {
+            tessera::PcfResult result;
+            {
+                py::gil_scoped_release release;
+                result = tessera::pair_correlation(data, pcf_options(r_max, bandwidth, bins));
+            }
+            py::dict curves;
+            for (const auto& c : result.curves) curves[py::make_tuple(c.name_a, c.name_b)] = to_array(c.g);
+            return py::make_tuple(to_array(result.r), curves, result.bandwidth);
+        },
+        py::arg("data"), py::arg("r_max"), py::arg("bandwidth"), py::arg("bins"));
+}
+
+}  // namespace tessera_python

@@ -1,0 +1,250 @@
+"""tessera: synthesize arrangements of discrete elements from a small example.
+
+Give tessera a few dozen placed elements (an *exemplar*: pebbles, trees and the
+mushrooms in their shade, noodles, ...) and an output domain; it fills the domain
+with elements whose local arrangement looks like the exemplar's everywhere.
+
+    import numpy as np, tessera
+    ex = tessera.exemplar(points, classes=labels, class_names=["tree", "bush"],
+                          domain=tessera.Domain.box((0, 0), (10, 10)))
+    out = tessera.synthesize(ex, domain="box:40,40", seed=7)
+    tessera.save(out, "forest.usda")
+
+Data travel as numpy arrays (see :class:`Exemplar`) or as files (:func:`load`,
+:func:`save`; formats by extension as in the CLI, docs/format.md). Options of
+:func:`synthesize` have the names and defaults of ``tessera synth``'s flags, with
+dashes written as underscores (``--patch-size`` -> ``patch_size``; ``--lambda`` ->
+``lambda_``). Errors are raised as :class:`TesseraError` subclasses carrying the
+library's message (``OptionError`` and ``InputError`` are ``ValueError``\\ s).
+The library releases the GIL while it works, so other Python threads keep running
+and several syntheses may run at once from different threads.
+"""
+
+import json as _json
+import os as _os
+
+from . import _tessera
+from ._tessera import Arrangement, Domain, Exemplar, PcfModel
+from .errors import (Cancelled, DomainError, FileError, InputError, InternalError, OptionError,
+                     TesseraError)
+
+__version__ = _tessera.version
+__all__ = [
+    "Arrangement", "Cancelled", "Domain", "DomainError", "Exemplar", "FileError", "InputError",
+    "InternalError", "OptionError", "PcfModel", "TesseraError", "analyze", "exemplar", "load",
+    "metrics", "pair_correlation", "render", "save", "synthesize",
+]
+
+_DEFAULTS = _tessera.default_options()
+_DET_ONLY = ("radius", "k", "search", "matching", "alpha", "lambda_", "patch_size", "patch_candidates",
+             "physics", "physics_substeps", "gravity", "floor_distance", "boundary", "boundary_distance",
+             "field")
+_PCF_ONLY = ("max_fails", "grid_cells", "epsilon0", "epsilon_step", "convergence", "outlier_rounds",
+             "sigma", "step", "extent")
+
+
+def exemplar(positions, classes=None, class_names=None, radii=None, orientations=None, scales=None,
+             ids=None, locked=None, element_of_sample=None, sample_ids=None, times=None,
+             attributes=None, attribute_names=None, domain=None, types=None):
+    """Build an exemplar from numpy arrays.
+
+    positions          S x 2 or S x 3 sample positions (one row per element when every
+                       element is a single sample).
+    element_of_sample  S element indices 0, 1, 2, ... with each element's samples in one
+                       run; default: every sample is its own element.
+    sample_ids         S positions within the element (0, 1, ...); only checked.
+    times              S time stamps (default 0).
+    classes            E class indices into class_names (default all 0).
+    class_names        names of the classes (default "0", "1", ...).
+    radii, scales      E radii (default 0 = none) and uniform scales (default 1).
+    orientations       E x 4 unit quaternions (w, x, y, z); default identity.
+    ids                E unique uint64 element ids (default 0 .. E-1).
+    locked             E booleans: locked elements are never moved.
+    attributes         E x A free attributes named by attribute_names.
+    domain             a Domain (or (lo, hi) corners) the elements were observed in;
+                       default the bounding box of the positions.
+    types              optional list of dicts per class: {"name", "rigid", "floor", "mesh",
+                       "reference", "depends_on"} (docs/format.md, "Element types").
+
+    Raises OptionError (a ValueError) naming the array with the wrong shape or value,
+    InputError when the data break the model's invariants.
+    """
+    return _tessera.make_exemplar(positions, classes, class_names, radii, orientations, scales, ids,
+                                  locked, element_of_sample, sample_ids, times, attributes,
+                                  attribute_names, _as_domain(domain, None, 2.0, "domain"), types)
+
+
+def load(path, input_domain=None):
+    """Load an exemplar or a previous output from a .json (tessera's native format) or
+    .csv table (docs/format.md). input_domain: the observation window of a CSV file (a
+    Domain or (lo, hi) corners; default the points' bounding box)."""
+    return _tessera.load(_os.fspath(path), _as_domain(input_domain, None, 2.0, "input_domain"))
+
+
+def save(data, path):
+    """Write an exemplar or arrangement, chosen by the extension of path, atomically (a
+    failed call leaves no file): .json (with the run statistics of an Arrangement), .csv,
+    .ply, .usda, .gltf/.glb, .obj, .mesh.ply, or a picture .png/.svg. docs/format.md
+    describes each."""
+    _tessera.save(data, _os.fspath(path))
+
+
+def render(data, path, width=800, meshes="auto"):
+    """Write a preview picture (.png or .svg) of an exemplar or arrangement: disks and
+    polylines by class in 2D, a shaded orthographic view in 3D. meshes: "auto" draws the
+    element types' meshes when some type has one, "on" always, "off" never."""
+    _tessera.render(data, _os.fspath(path), width, meshes)
+
+
+def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterations=None,
+               threads=0, progress=None,
+               radius=0.0, k=4, search="kcoherence", matching="greedy", alpha=-1.0, lambda_=-1.0,
+               patch_size=0.0, patch_candidates=16, physics=False, physics_substeps=5, gravity=None,
+               floor_distance=0.0, boundary=None, boundary_distance=0.0, field=None,
+               max_fails=1000, grid_cells=64, epsilon0=0.0, epsilon_step=0.001, convergence=0.001,
+               outlier_rounds=2, sigma=0.25, step=0.1, extent=5.0):
+    """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement.
+
+    exemplar  an Exemplar (from tessera.exemplar or tessera.load), a path to one, or, for
+              method="pcf", an analysed PcfModel (then `domain` is required).
+    domain    the output domain: a Domain; (lo, hi) corners; a string in the CLI's --domain
+              forms ("box:W,H[,D]" from the exemplar's lower corner, "box:xmin,ymin,xmax,ymax",
+              "polygon:FILE.json", "mask:FILE.png[@box]", "mesh:FILE[,res]", "shell:FILE,t[,res]");
+              or None: the exemplar's domain scaled by `scale` (2 = about 4x the elements in 2D).
+    method    "det": neighbourhood matching (Discrete Element Textures; 2D and 3D, any elements);
+              "pcf": 2D disks from pair correlation functions (multi-class, dependent classes).
+    seed      seed of every random draw; the same inputs, options and seed give identical
+              output whatever `threads` is (0 = all hardware threads).
+    iterations det: search + assignment iterations (default 10); pcf: at most this many
+              refinement sweeps per class (default 100).
+    progress  optional callable, called with a dict (stage, iteration, iterations, energy,
+              elapsed) after every iteration. Return False to cancel (tessera.Cancelled is
+              raised); an exception it raises cancels the run and propagates.
+
+    det options (docs/cli.md and `tessera synth --help` give the details):
+      radius (0 = automatic), k, search ("kcoherence" | "exhaustive"), matching ("greedy" |
+      "hungarian"), alpha and lambda_ (negative = automatic), patch_size (0 = automatic),
+      patch_candidates, physics, physics_substeps, gravity ("-z", or a vector), floor_distance,
+      boundary ("-x,+x" or ["-x", "+x"]) with boundary_distance, field (the --field forms,
+      e.g. "vortex:5,5" or "grid:FILE.json").
+    pcf options: max_fails, grid_cells, epsilon0, epsilon_step, convergence, outlier_rounds,
+      sigma, step, extent.
+    An option of the other method set to a value other than its default is an OptionError.
+
+    Raises OptionError/DomainError/InputError (ValueErrors) naming what is wrong, FileError,
+    Cancelled. The GIL is released while the library works.
+    """
+    if method not in ("det", "pcf"):
+        raise OptionError("method must be 'det' or 'pcf', got %r" % (method,))
+    given = dict(radius=radius, k=k, search=search, matching=matching, alpha=alpha, lambda_=lambda_,
+                 patch_size=patch_size, patch_candidates=patch_candidates, physics=physics,
+                 physics_substeps=physics_substeps, gravity=gravity, floor_distance=floor_distance,
+                 boundary=boundary, boundary_distance=boundary_distance, field=field,
+                 max_fails=max_fails, grid_cells=grid_cells, epsilon0=epsilon0,
+                 epsilon_step=epsilon_step, convergence=convergence, outlier_rounds=outlier_rounds,
+                 sigma=sigma, step=step, extent=extent)
+    mine, theirs = (_DET_ONLY, _PCF_ONLY) if method == "det" else (_PCF_ONLY, _DET_ONLY)
+    defaults = _DEFAULTS["pcf" if method == "det" else "det"]
+    for name in theirs:
+        if given[name] != defaults.get(name, None):
+            raise OptionError("%s applies to method=%r only" % (name, "pcf" if method == "det" else "det"))
+    options = {name: given[name] for name in mine}
+    options.update(seed=seed, threads=threads)
+    if iterations is not None:
+        options["iterations"] = iterations
+    if progress is not None and not callable(progress):
+        raise OptionError("progress must be callable, got %r" % (progress,))
+    if isinstance(exemplar, (str, bytes, _os.PathLike)):
+        exemplar = load(exemplar)
+    if isinstance(exemplar, PcfModel):
+        if method != "pcf":
+            raise OptionError("a PcfModel is synthesized with method='pcf'")
+        if domain is None:
+            raise OptionError("domain is required when synthesizing from a PcfModel")
+        for name in ("sigma", "step", "extent"):
+            options.pop(name)
+        return _tessera.synthesize_model(exemplar, _as_domain(domain, None, scale, "domain"), options,
+                                         progress)
+    if not isinstance(exemplar, Exemplar):
+        raise OptionError("exemplar must be a tessera.Exemplar, a PcfModel or a file path, got %s"
+                          % type(exemplar).__name__)
+    return _tessera.synthesize(exemplar, _as_domain(domain, exemplar, scale, "domain"), method, options,
+                               progress)
+
+
+def analyze(exemplar, *, sigma=0.25, step=0.1, extent=5.0):
+    """Analyse a 2D exemplar for the PCF method (`tessera analyze`): r_max (Eq. 1), the
+    mean PCF and validity envelope of each class and each dependency (Eq. 2, 3) on the
+    normalised axis (the disk metric of Eq. 7-10 for disks). The dependency graph comes
+    from the types' depends_on (default: every class depends on all earlier ones).
+    Returns a PcfModel; use tessera.synthesize(model, domain, method="pcf") to synthesize
+    from it, model.to_json() / tessera.save_model to keep it, tessera.plot_model to draw it."""
+    if isinstance(exemplar, (str, bytes, _os.PathLike)):
+        exemplar = load(exemplar)
+    return _tessera.analyze(exemplar, sigma, step, extent)
+
+
+def save_model(model, path):
+    """Write a PcfModel as JSON (the format `tessera analyze -o` writes), atomically."""
+    _tessera.save_model(model, _os.fspath(path))
+
+
+def load_model(path):
+    """Read a PcfModel written by save_model or `tessera analyze -o`."""
+    return _tessera.load_model(_os.fspath(path))
+
+
+def plot_model(model, path, compare=None):
+    """Draw every PCF of a model with its envelope (.png or .svg); with `compare` (an
+    arrangement), its measured mean PCFs are drawn over the model's."""
+    _tessera.plot_model(model, _os.fspath(path), compare)
+
+
+def compare_model(model, exemplar, output):
+    """How well `output` reproduces `model` (analysed from `exemplar`): the share of r-bins of
+    each PCF inside the validity envelope, the count ratio per class, and the shares of the
+    salient disk configurations in input and output (dicts)."""
+    return _tessera.compare(model, exemplar, output)
+
+
+def metrics(exemplar, output, *, r_max=0.0, bandwidth=0.0, bins=0):
+    """Compare an output with its exemplar (`tessera metrics`): pair correlation per class
+    pair in physical units and its relative error, nearest-neighbour distances, |psi6| in 2D.
+    r_max 0 = 5x the mean nearest-neighbour distance; bandwidth 0 = r_max / 40; bins 0 = 101.
+    Returns the report as a dict."""
+    return _json.loads(_tessera.metrics_report(_as_data(exemplar), _as_data(output), r_max, bandwidth, bins))
+
+
+def pair_correlation(data, *, r_max=0.0, bandwidth=0.0, bins=0):
+    """The standard pair correlation g(r) of an arrangement (spatstat's convention: Gaussian
+    kernel, translation edge correction). Returns (r, curves, bandwidth) where curves maps
+    (class_a, class_b) name pairs to arrays of g over r."""
+    return _tessera.pair_correlation(_as_data(data), r_max, bandwidth, bins)
+
+
+def _as_data(data):
+    if isinstance(data, (str, bytes, _os.PathLike)):
+        return load(data)
+    return data
+
+
+def _as_domain(domain, exemplar, scale, name):
+    """A Domain from what the user gave for `name` (see synthesize)."""
+    if isinstance(domain, Domain):
+        return domain
+    if domain is None:
+        if exemplar is None:
+            return None
+        if not (isinstance(scale, (int, float)) and scale > 0):
+            raise OptionError("scale must be a number > 0, got %r" % (scale,))
+        return exemplar.domain.scaled(float(scale))
+    if isinstance(domain, str):
+        if exemplar is None:
+            raise OptionError("%s: a text form needs an exemplar; give a Domain or (lo, hi) corners" % name)
+        return Domain.parse(domain, exemplar, float(scale))
+    try:
+        lo, hi = domain
+    except (TypeError, ValueError):
+        raise OptionError("%s must be a tessera.Domain, (lo, hi) corners or a --domain text form, got %r"
+                          % (name, domain)) from None
+    return Domain.box(tuple(lo), tuple(hi))

@@ -1,0 +1,85 @@
+"""The progress callback: called per iteration, may cancel by returning False or raising,
+and the GIL is free while the library works."""
+import threading
+import time
+
+import pytest
+
+import tessera
+
+
+def test_progress_is_called_for_every_iteration(two_class):
+    events = []
+    tessera.synthesize(two_class, iterations=3, progress=events.append)
+    iterations = [e for e in events if e["stage"] == "iteration"]
+    assert [e["iteration"] for e in iterations] == [0, 1, 2]
+    assert all(e["iterations"] == 3 and e["elapsed"] >= 0 for e in iterations)
+
+
+def test_returning_false_cancels(two_class):
+    calls = []
+
+    def stop_after_first(event):
+        calls.append(event)
+        return event["stage"] != "iteration"
+
+    with pytest.raises(tessera.Cancelled):
+        tessera.synthesize(two_class, iterations=5, progress=stop_after_first)
+    assert sum(e["stage"] == "iteration" for e in calls) == 1
+
+
+def test_an_exception_in_the_callback_cancels_and_propagates(two_class):
+    class Stop(Exception):
+        pass
+
+    def boom(event):
+        if event["stage"] == "iteration":
+            raise Stop("enough")
+
+    with pytest.raises(Stop, match="enough"):
+        tessera.synthesize(two_class, iterations=5, progress=boom)
+
+
+def test_pcf_progress_and_cancel(two_class):
+    with pytest.raises(tessera.Cancelled):
+        tessera.synthesize(two_class, method="pcf", progress=lambda e: False)
+
+
+def test_the_gil_is_released_during_synthesis(two_class):
+    # A Python thread keeps counting while another thread synthesizes a large output.
+    ticks = []
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    start = time.perf_counter()
+    try:
+        tessera.synthesize(two_class, scale=8.0, iterations=4, threads=1)
+    finally:
+        done.set()
+        counter.join()
+    elapsed = time.perf_counter() - start
+    during = [t for t in ticks if start <= t]
+    # With the GIL held the counter would be starved for the whole run.
+    assert elapsed > 0.05
+    assert len(during) >= 10
+
+
+def test_concurrent_syntheses_from_threads_match_serial_ones(two_class):
+    serial = [tessera.synthesize(two_class, seed=s, iterations=2, threads=1).positions for s in (1, 2)]
+    results = {}
+
+    def run(seed):
+        results[seed] = tessera.synthesize(two_class, seed=seed, iterations=2, threads=1).positions
+
+    threads = [threading.Thread(target=run, args=(s,)) for s in (1, 2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert (results[1] == serial[0]).all() and (results[2] == serial[1]).all()
