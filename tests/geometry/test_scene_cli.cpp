@@ -94,6 +94,11 @@ TEST_F(SceneCli, SynthWritesAGltfThatParses) {
         elements += doc["accessors"][attributes["TRANSLATION"].get<size_t>()]["count"].get<size_t>();
     }
     EXPECT_EQ(elements, result.elements.size());
+    // The fallback: one node per element.
+    const CliRun nodes = run("synth " + q("in/mix.json") + " -o " + q("out/nodes.gltf") +
+                             " --iterations 1 --seed 5 -q --gltf-instancing nodes");
+    ASSERT_EQ(nodes.code, 0) << nodes.err;
+    EXPECT_EQ(nlohmann::json::parse(read("out/nodes.gltf"))["nodes"].size(), result.elements.size());
     // The saved arrangement names the mesh relative to itself, so it rebuilds too.
     EXPECT_NE(read("out/result.json").find(R"("mesh":"../in/meshes/tetra.obj")"), std::string::npos);
     const CliRun again = run("scene " + q("out/result.json") + " -o " + q("out/again.obj"));
@@ -110,8 +115,11 @@ TEST_F(SceneCli, SceneCommandReportsWhatItWrote) {
     const std::string expected = "scene: 7 instances, 4 meshes, " + std::to_string(mesh.triangles.size()) +
                                  " triangles, max rigid fit error ";
     EXPECT_EQ(r.err.rfind(expected, 0), 0u) << r.err;
-    for (const char* format : {"mix.mesh.ply", "mix.glb", "mix.gltf"})
+    for (const char* format : {"mix.mesh.ply", "mix.glb", "mix.gltf", "mix.usda"})
         EXPECT_EQ(run("scene " + q("in/mix.json") + " -o " + q(std::string("out/") + format) + " -q").code, 0);
+    EXPECT_EQ(read("out/mix.usda").rfind("#usda 1.0\n", 0), 0u);
+    EXPECT_NE(read("out/mix.usda").find("def PointInstancer \"Elements\""), std::string::npos);
+    EXPECT_EQ(run("scene " + q("in/mix.json") + " -o " + q("out/nodes.glb") + " -q --gltf-instancing nodes").code, 0);
 }
 
 TEST_F(SceneCli, SynthToAMissingDirectoryWritesNothing) {
@@ -126,6 +134,10 @@ TEST_F(SceneCli, ErrorsLeaveNoFile) {
     expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.stl")), 2, ".stl");
     expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.obj") + " --tube-sides 2"), 2,
                    "--tube-sides");
+    expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.glb") + " --gltf-instancing all"), 2,
+                   "--gltf-instancing must be gpu or nodes, got 'all'");
+    expect_failure(run("synth " + q("in/mix.json") + " -o " + q("out/mix.glb") + " --gltf-instancing x"), 2,
+                   "--gltf-instancing");
     fs::remove(path("in/meshes/tetra.obj"));
     expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.glb")), 5, "tetra.obj");
     // synth finds the missing mesh before synthesizing.
