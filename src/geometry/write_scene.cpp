@@ -53,8 +53,16 @@ void write_scene(const Scene& scene, const std::string& path, const SceneWriteOp
             return write_file_atomic(path, geometry::to_gltf(scene, false, options.gltf_instancing));
         case SceneFormat::glb:
             return write_file_atomic(path, geometry::to_gltf(scene, true, options.gltf_instancing));
-        case SceneFormat::usda:
-            return write_file_atomic(path, geometry::to_usda(scene));
+        case SceneFormat::usda: {
+            std::string text;
+            try {
+                text = geometry::to_usda(scene);
+            } catch (const Error& e) {  // to_usda does not know the file's name
+                if (e.kind() != ErrorKind::input) throw;
+                throw Error(e.kind(), "cannot write scene " + path + ": " + e.what());
+            }
+            return write_file_atomic(path, text);
+        }
         case SceneFormat::none:
             break;
     }

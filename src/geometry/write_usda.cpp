@@ -14,11 +14,14 @@
 // - elements that cannot be instanced (deformed meshes, tubes) are Mesh prims of their
 //   own in world coordinates under /World/Meshes, named type_id.
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 
 #include "geometry/geometry_internal.hpp"
 #include "geometry/usda_text.hpp"
 #include "io/io_util.hpp"
 #include "render/palette.hpp"
+#include "tessera/error.hpp"
 #include "tessera/version.hpp"
 
 namespace tessera::geometry {
@@ -152,7 +155,13 @@ std::string own_meshes(const Scene& scene) {
 
 std::string to_usda(const Scene& scene) {
     size_t instanced = 0;
-    for (const SceneInstance& inst : scene.instances) instanced += inst.instanced ? 1 : 0;
+    for (const SceneInstance& inst : scene.instances) {
+        instanced += inst.instanced ? 1 : 0;
+        // USD's ids are int64; a larger id would not read back.
+        if (inst.id > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+            throw Error(ErrorKind::input, "element id " + std::to_string(inst.id) +
+                                              " is too large for USD's int64 ids; use .json or .csv");
+    }
     std::string out = "#usda 1.0\n(\n";
     out += "    defaultPrim = \"World\"\n";
     out += "    doc = " +

@@ -12,6 +12,7 @@
 
 #include "geometry/geometry_test_util.hpp"
 #include "io/usda_reader.hpp"
+#include "tessera/error.hpp"
 #include "tessera/io.hpp"
 
 using namespace geometry_test;
@@ -206,4 +207,21 @@ TEST_F(SaveUsda, NamesBecomeUniqueIdentifiersAnd2DLiesInThePlane) {
         EXPECT_EQ(items(instancer, "primvars:tessera:classNames")[t].text, names[t]);  // kept as written
     for (const Value& p : items(instancer, "positions")) EXPECT_EQ(p.items[2].x, 0.0);
     for (const Value& s : items(instancer, "scales")) EXPECT_EQ(s.items[0].x, 0.25);  // a sphere's radius
+}
+
+TEST_F(SaveUsda, IdsBeyondInt64AreAnErrorNamingTheFile) {
+    Exemplar ex;
+    ex.add_element(ex.type_index("dot"), {{0.5, 0.5, 0}}, 0.1);
+    ex.elements[0].id = std::uint64_t(1) << 63;
+    try {
+        save(ex, path("big.usda"));
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::input);
+        EXPECT_NE(std::string(e.what()).find("big.usda"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("9223372036854775808"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(path("big.usda")));
+    ex.elements[0].id = (std::uint64_t(1) << 63) - 1;  // the largest int64 is fine
+    EXPECT_NE(save_and_read(ex, "max.usda").find("/World/Elements"), nullptr);
 }
