@@ -11,7 +11,7 @@ namespace tessera_cli {
 namespace {
 
 struct EditArgs {
-    std::string input, edit, output, input_domain;
+    std::string input, edit, output, input_domain, gltf_instancing = "gpu";
     bool quiet = false;
     tessera::EditOptions options;
 };
@@ -20,12 +20,14 @@ void run_edit(EditArgs& args) {
     if (!(args.options.radius >= 0.0)) fail_option("--radius must be >= 0 (0 = automatic)");
     if (args.options.threads < 0) fail_option("--threads must be >= 0");
     check_arrangement_output(args.output, "-o");
+    tessera::SaveOptions save_options;
+    save_options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
     const tessera::Exemplar data = load_input(args.input, args.input_domain);
     if (tessera::is_scene_path(args.output)) tessera::build_scene(data);  // meshes checked before the edit
     const tessera::ElementEdit edit = tessera::parse_edit_json(tessera::read_file(args.edit), args.edit);
     tessera::EditReport report;
     const tessera::Exemplar result = tessera::edit_elements(data, edit, args.options, &report);
-    const std::string scene = write_arrangement(result, args.output);
+    const std::string scene = write_arrangement(result, args.output, save_options);
     if (!args.quiet && !scene.empty()) std::cerr << "scene: " << scene << std::endl;
     if (!args.quiet)
         std::cerr << "edit: changed " << report.changed.size() << " of " << data.elements.size()
@@ -44,7 +46,10 @@ Subcommand add_edit_command(CLI::App& app) {
     cmd->add_option("EDIT", args->edit, "The edit: a JSON file (docs/format.md, \"Edit files\").")
         ->required()
         ->type_name("FILE");
-    add_output_option(*cmd, args->output, "The edited arrangement: .json, .csv, .ply, .png, .svg, or a scene .obj, .mesh.ply, .gltf or .glb.", true);
+    add_output_option(*cmd, args->output,
+                      "The edited arrangement: .json, .csv, .ply (one point per element), .png, .svg, or a "
+                      "scene .usda, .gltf, .glb, .obj or .mesh.ply.",
+                      true);
     cmd->add_option("--threshold", args->options.threshold,
                     "Largest neighbourhood distance (Eq. 1, squared length units) of an element that receives "
                     "the edit; negative = automatic (0.1 x spacing^2 per neighbour of the edited element).")
@@ -53,6 +58,7 @@ Subcommand add_edit_command(CLI::App& app) {
                     "Neighbourhood radius; 0 = automatic (2 spacings in 2D, 1.5 in 3D).")
         ->capture_default_str();
     cmd->add_option("--threads", args->options.threads, "Worker threads; 0 = all.")->capture_default_str();
+    add_gltf_instancing_option(*cmd, args->gltf_instancing);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { run_edit(*args); }};

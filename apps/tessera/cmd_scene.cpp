@@ -1,7 +1,7 @@
 // apps/tessera/cmd_scene.cpp — `tessera scene INPUT -o SCENE`: rebuilds the geometry of
-// a saved arrangement or exemplar (tessera::build_scene: type meshes posed or deformed
-// by the samples, default spheres and tubes) and writes it as .obj, .mesh.ply, .gltf or
-// .glb, reporting instances, meshes, triangles and the largest rigid fit error.
+// a saved arrangement or exemplar (tessera::save_scene: type meshes posed or deformed
+// by the samples, default spheres and tubes) and writes it as .usda, .gltf, .glb, .obj or
+// .mesh.ply, reporting instances, meshes, triangles and the largest rigid fit error.
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -12,17 +12,18 @@ namespace tessera_cli {
 namespace {
 
 struct SceneArgs {
-    std::string input, output, input_domain;
+    std::string input, output, input_domain, gltf_instancing = "gpu";
     bool quiet = false;
-    tessera::GeometryOptions options;
+    tessera::SaveOptions options;
 };
 
 void run_scene(SceneArgs& args) {
-    check_output_path(args.output, "-o", {".obj", ".mesh.ply", ".gltf", ".glb", ".ply"});
+    check_output_path(args.output, "-o", {".usda", ".gltf", ".glb", ".obj", ".mesh.ply", ".ply"});
     if (!tessera::is_scene_path(args.output))
-        fail_option("-o " + args.output + ": a scene is .obj, .mesh.ply, .gltf or .glb (a plain .ply is the point "
-                    "output of synth)");
-    const auto& o = args.options;
+        fail_option("-o " + args.output + ": a scene is .usda, .gltf, .glb, .obj or .mesh.ply (a plain .ply is the "
+                    "point output of synth)");
+    args.options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
+    const auto& o = args.options.geometry;
     if (o.sphere_subdivisions < 0 || o.sphere_subdivisions > 5)
         fail_option("--sphere-subdivisions must be 0 to 5, got " + std::to_string(o.sphere_subdivisions));
     if (o.tube_sides < 3 || o.tube_sides > 64)
@@ -30,8 +31,7 @@ void run_scene(SceneArgs& args) {
     if (!(o.deform_falloff > 0.0) || !std::isfinite(o.deform_falloff))
         fail_option("--deform-falloff must be a number > 0, got " + format_number(o.deform_falloff));
     const tessera::Exemplar data = load_input(args.input, args.input_domain);
-    const tessera::Scene scene = tessera::build_scene(data, args.options);
-    tessera::write_scene(scene, args.output);
+    const tessera::Scene scene = tessera::save_scene(data, args.output, args.options);
     if (!args.quiet) std::cerr << "scene: " << describe_scene(scene) << "; wrote " << args.output << std::endl;
 }
 
@@ -48,20 +48,22 @@ Subcommand add_scene_command(CLI::App& app) {
         ->required()
         ->type_name("FILE");
     add_output_option(*cmd, args->output,
-                      "The scene: .obj, .mesh.ply (ASCII PLY with per-face element and class), .gltf (buffer "
-                      "embedded) or .glb.",
+                      "The scene: .usda (USD layer: a PointInstancer of the instanced elements, meshes of "
+                      "their own for the others), .gltf (buffer embedded) or .glb (see --gltf-instancing), "
+                      ".obj, or .mesh.ply (ASCII PLY with per-face element and class).",
                       true);
-    cmd->add_option("--sphere-subdivisions", args->options.sphere_subdivisions,
+    cmd->add_option("--sphere-subdivisions", args->options.geometry.sphere_subdivisions,
                     "Subdivisions of the icosphere of single-sample elements without a mesh (0 to 5; 20 x 4^N "
                     "triangles).")
         ->capture_default_str();
-    cmd->add_option("--tube-sides", args->options.tube_sides,
+    cmd->add_option("--tube-sides", args->options.geometry.tube_sides,
                     "Sides of the tubes of multi-sample elements without a mesh (3 to 64).")
         ->capture_default_str();
-    cmd->add_option("--deform-falloff", args->options.deform_falloff,
+    cmd->add_option("--deform-falloff", args->options.geometry.deform_falloff,
                     "Width of a sample's influence on a deformable mesh, times the mean distance between "
                     "consecutive reference samples (> 0; larger = smoother, less exact bends).")
         ->capture_default_str();
+    add_gltf_instancing_option(*cmd, args->gltf_instancing);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { run_scene(*args); }};

@@ -34,6 +34,7 @@ extern "C" void on_interrupt(int) {
 
 struct SynthArgs {
     std::string input, output, preview, input_domain, domain, field, gravity, boundary, meshes = "auto";
+    std::string gltf_instancing = "gpu";
     double scale = 2.0;
     std::string method = "det";
     std::string search, matching;
@@ -128,6 +129,8 @@ void run_synth(SynthArgs& args) {
     if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
     tessera::RenderOptions preview_options;
     preview_options.meshes = parse_meshes_option(args.meshes);
+    tessera::SaveOptions save_options;
+    save_options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
 
     const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
     // A scene output needs the types' meshes and reference layouts: check them (by
@@ -173,7 +176,7 @@ void run_synth(SynthArgs& args) {
 
     // The preview goes first: when OUTPUT exists, the whole command succeeded.
     if (!args.preview.empty()) tessera::render_to_file(result, args.preview, preview_options);
-    const std::string scene = write_arrangement(result, args.output);
+    const std::string scene = write_arrangement(result, args.output, save_options);
     if (!args.quiet) {
         char line[256];
         std::snprintf(line, sizeof line, "done: %zu elements, %.2f s, final energy %.6g",
@@ -208,9 +211,10 @@ Subcommand add_synth_command(CLI::App& app) {
         ->type_name("FILE");
     add_output_option(
         *cmd, args->output,
-        "Output file, by extension: .json (with run statistics), .csv, .ply, a picture .png/.svg, or "
-        "the elements' geometry as a scene .obj/.mesh.ply/.gltf/.glb (docs/format.md, \"Element "
-        "geometry\"). Written only when the run succeeds.",
+        "Output file, by extension: .json (with run statistics), .csv, .ply (one point per element "
+        "with orient, pscale, class, id for instancing), a picture .png/.svg, or the elements' geometry "
+        "as a scene: .usda (USD PointInstancer), .gltf/.glb (see --gltf-instancing), .obj, .mesh.ply "
+        "(docs/format.md). Written only when the run succeeds.",
         true);
     args->scale_option =
         cmd->add_option(
@@ -237,6 +241,7 @@ Subcommand add_synth_command(CLI::App& app) {
            "OUTPUT, so an existing OUTPUT means the whole command succeeded.")
         ->type_name("FILE");
     add_meshes_option(*cmd, args->meshes);
+    add_gltf_instancing_option(*cmd, args->gltf_instancing);
     cmd->add_option("--method", args->method,
                     "Synthesis method: det (neighbourhood matching, Discrete Element Textures) or pcf "
                     "(2D disks from pair correlation functions, docs/pcf_synthesis.md).")

@@ -77,6 +77,22 @@ tessera::RenderOptions::Meshes parse_meshes_option(const std::string& text) {
     fail_option("--meshes must be auto, on or off, got '" + text + "'");
 }
 
+CLI::Option* add_gltf_instancing_option(CLI::App& app, std::string& text) {
+    return app
+        .add_option("--gltf-instancing", text,
+                    "How a .gltf/.glb output places the elements that share a mesh: gpu = one node per "
+                    "mesh with the EXT_mesh_gpu_instancing extension (compact; the extension is marked "
+                    "required), nodes = one node per element, for viewers and importers without the "
+                    "extension (default: gpu).")
+        ->type_name("gpu|nodes");
+}
+
+tessera::GltfInstancing parse_gltf_instancing_option(const std::string& text) {
+    if (text == "gpu") return tessera::GltfInstancing::gpu;
+    if (text == "nodes") return tessera::GltfInstancing::nodes;
+    fail_option("--gltf-instancing must be gpu or nodes, got '" + text + "'");
+}
+
 CLI::Option* add_threads_option(CLI::App& app, int& threads) {
     return app
         .add_option("--threads", threads,
@@ -148,7 +164,8 @@ void check_output_path(const std::string& path, const std::string& flag,
 
 void check_arrangement_output(const std::string& path, const std::string& flag) {
     // ".mesh.ply" ends in ".ply"; it is listed for the message.
-    check_output_path(path, flag, {".json", ".csv", ".ply", ".png", ".svg", ".obj", ".mesh.ply", ".gltf", ".glb"});
+    check_output_path(path, flag,
+                      {".json", ".csv", ".ply", ".png", ".svg", ".usda", ".gltf", ".glb", ".obj", ".mesh.ply"});
 }
 
 std::string describe_scene(const tessera::Scene& scene) {

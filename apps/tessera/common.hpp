@@ -44,6 +44,10 @@ CLI::Option* add_seed_option(CLI::App& app, std::uint64_t& seed);
 CLI::Option* add_meshes_option(CLI::App& app, std::string& text);
 // The value of --meshes; fails with an option error naming the flag for another value.
 tessera::RenderOptions::Meshes parse_meshes_option(const std::string& text);
+// --gltf-instancing gpu|nodes: how .gltf/.glb outputs place instances (SaveOptions::gltf_instancing).
+CLI::Option* add_gltf_instancing_option(CLI::App& app, std::string& text);
+// The value of --gltf-instancing; fails with an option error naming the flag for another value.
+tessera::GltfInstancing parse_gltf_instancing_option(const std::string& text);
 
 // Loads an exemplar or arrangement from .json or .csv. A non-empty
 // `input_domain_text` ("xmin,ymin,xmax,ymax[,zmin,zmax]", the value of the option
@@ -62,26 +66,24 @@ void check_output_path(const std::string& path, const std::string& flag,
                        std::initializer_list<const char*> allowed);
 
 // The -o of synth and edit: data (.json, .csv, .ply), pictures (.png, .svg) or
-// scenes of the elements' geometry (.obj, .mesh.ply, .gltf, .glb); checked up front
-// like check_output_path.
+// scenes of the elements' geometry (.usda, .gltf, .glb, .obj, .mesh.ply); checked up
+// front like check_output_path.
 void check_arrangement_output(const std::string& path, const std::string& flag);
 
 // One line about a scene: instances, meshes, triangles and the largest rigid fit error.
 std::string describe_scene(const tessera::Scene& scene);
 
-// Writes `data` (an Exemplar or an Arrangement) by the extension of `path`: a scene path
-// gets the elements' geometry (tessera::build_scene + write_scene; mesh paths as loaded,
-// relative to the working directory) and returns describe_scene; anything else goes to
-// tessera::save and returns "".
+// Writes `data` (an Exemplar or an Arrangement) by the extension of `path` through the
+// library (tessera::save; a scene path through tessera::save_scene, whose scene it
+// describes): returns describe_scene for a scene path, else "".
 template <class Data>
-std::string write_arrangement(const Data& data, const std::string& path) {
+std::string write_arrangement(const Data& data, const std::string& path,
+                              const tessera::SaveOptions& options) {
     if (!tessera::is_scene_path(path)) {
-        tessera::save(data, path);
+        tessera::save(data, path, options);
         return "";
     }
-    const tessera::Scene scene = tessera::build_scene(data);
-    tessera::write_scene(scene, path);
-    return describe_scene(scene);
+    return describe_scene(tessera::save_scene(data, path, options));
 }
 
 // Formats a double compactly for messages ("%g").

@@ -25,7 +25,7 @@ def main(out):
     sweeps = []
     det = tessera.synthesize(ex, domain="box:40,40", seed=7, progress=sweeps.append)
     tessera.render(det, out / "orchard_det.png")
-    tessera.save(det, out / "orchard_det.ply")
+    tessera.save(det, out / "orchard_det.usda")
     tessera.save(det, out / "orchard_det.json")
     # The same exemplar by the PCF method (bushes depend on trees by default).
     pcf = tessera.synthesize(ex, domain="box:40,40", method="pcf", seed=7)

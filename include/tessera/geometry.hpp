@@ -31,7 +31,9 @@
 // - Types without a mesh get a default shape: an icosphere of the element radius for
 //   single-sample elements, a tube through the samples for multi-sample elements (the
 //   radius). Without a radius, spheres get 0.5 and tubes 0.2 x the mean nearest-neighbour
-//   distance between element centroids.
+//   distance between element centroids. The spheres of a type share one unit icosphere,
+//   instanced with the radius as scale, so that instancing outputs (USD, glTF) carry them
+//   as points; tubes follow their samples and are meshes of their own.
 // 2D data are placed in the plane z = 0; their meshes are 3D (rotated about z).
 #pragma once
 
@@ -67,16 +69,18 @@ struct SceneInstance {
     // meshes and default shapes), and the pose is informational.
     bool instanced = false;
     // Where the mesh's local origin lands: the samples' centroid when the reference
-    // layout is centred (derived layouts are).
+    // layout is centred (derived layouts are); a default sphere's sample.
     Vec3 position;
     Quat orientation;
-    double scale = 1.0;
+    double scale = 1.0;      // the element's scale; a default sphere's radius
     double fit_error = 0.0;  // rigid: RMS distance between posed reference samples and the samples
+    std::vector<double> attributes;  // the element's free attributes (Scene::attribute_names)
 };
 
 struct Scene {
     int dimension = 3;
     std::vector<std::string> type_names;
+    std::vector<std::string> attribute_names;  // the data's free attributes, written by instancing formats
     std::vector<TriangleMesh> meshes;
     std::vector<SceneInstance> instances;  // one per element, in element order
 
@@ -94,16 +98,32 @@ struct Scene {
 // whose sample count differs from the type's elements; Error(option) for bad options.
 Scene build_scene(const Exemplar& data, const GeometryOptions& options = {});
 
-// True when `path` names a scene format: .obj, .gltf, .glb, or .mesh.ply (a plain
+// True when `path` names a scene format: .obj, .gltf, .glb, .usda or .mesh.ply (a plain
 // .ply is the point-instancing output of save()).
 bool is_scene_path(const std::string& path);
+
+// How glTF files place the instances of a shared mesh (docs/format.md, "glTF").
+enum class GltfInstancing {
+    gpu,    // one node per shared mesh with the EXT_mesh_gpu_instancing extension: per-instance
+            // TRANSLATION, ROTATION, SCALE (and _ID) accessors; compact, for engines and viewers
+            // that support the extension (it is listed as required)
+    nodes,  // one node per element carrying its pose, for viewers without the extension
+};
+
+struct SceneWriteOptions {
+    GltfInstancing gltf_instancing = GltfInstancing::gpu;  // .gltf / .glb only
+};
 
 // Writes the scene by extension, atomically:
 //   .obj       one object (o) per element, grouped by type (g), shared vertices per element;
 //   .mesh.ply  ASCII PLY with per-face `element` and `class` properties;
-//   .gltf/.glb glTF 2.0: one mesh per element type instanced by one node per element
-//              (rigid: TRS from the pose), deformed meshes as meshes of their own.
+//   .gltf/.glb glTF 2.0: one mesh per shared mesh (a rigid type's, a type's default sphere),
+//              its instances as EXT_mesh_gpu_instancing attributes of one node (gpu) or as
+//              one node each with the pose (nodes); deformed meshes and tubes as meshes of
+//              their own under untransformed nodes;
+//   .usda      a USD layer: the instanced elements as one UsdGeomPointInstancer whose
+//              prototypes are the shared meshes, the others as world-space Mesh prims.
 // Throws Error(option) for another extension, Error(io) when it cannot write.
-void write_scene(const Scene& scene, const std::string& path);
+void write_scene(const Scene& scene, const std::string& path, const SceneWriteOptions& options = {});
 
 }  // namespace tessera

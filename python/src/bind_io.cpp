@@ -1,12 +1,11 @@
-// Files, pictures and statistics for Python: load and save by extension (tessera/io.hpp),
-// scenes of the elements' geometry (tessera/geometry.hpp), preview pictures
+// Files, pictures and statistics for Python: load and save by extension (tessera/io.hpp;
+// save also writes the scenes of the elements' geometry), preview pictures
 // (tessera/render.hpp), and the metrics of tessera/metrics.hpp.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "tessera/geometry.hpp"
 #include "tessera/io.hpp"
 #include "tessera/metrics.hpp"
 #include "tessera/render.hpp"
@@ -32,12 +31,17 @@ tessera::PcfOptions pcf_options(double r_max, double bandwidth, int bins) {
 }
 
 template <class Data>
-void save_data(const Data& data, const std::string& path) {
-    py::gil_scoped_release release;
-    if (tessera::is_scene_path(path))
-        tessera::write_scene(tessera::build_scene(data), path);
+void save_data(const Data& data, const std::string& path, const std::string& gltf_instancing) {
+    tessera::SaveOptions options;
+    if (gltf_instancing == "gpu")
+        options.gltf_instancing = tessera::GltfInstancing::gpu;
+    else if (gltf_instancing == "nodes")
+        options.gltf_instancing = tessera::GltfInstancing::nodes;
     else
-        tessera::save(data, path);
+        throw tessera::Error(tessera::ErrorKind::option,
+                             "gltf_instancing must be 'gpu' or 'nodes', got '" + gltf_instancing + "'");
+    py::gil_scoped_release release;
+    tessera::save(data, path, options);
 }
 
 }  // namespace
@@ -53,8 +57,8 @@ void bind_io(py::module_& m) {
         },
         py::arg("path"), py::arg("input_domain"));
     // Arrangement first: pybind11 tries overloads in order, and its JSON records the run statistics.
-    m.def("save", &save_data<tessera::Arrangement>, py::arg("data"), py::arg("path"));
-    m.def("save", &save_data<tessera::Exemplar>, py::arg("data"), py::arg("path"));
+    m.def("save", &save_data<tessera::Arrangement>, py::arg("data"), py::arg("path"), py::arg("gltf_instancing"));
+    m.def("save", &save_data<tessera::Exemplar>, py::arg("data"), py::arg("path"), py::arg("gltf_instancing"));
     m.def(
         "render",
         [](const tessera::Exemplar& data, const std::string& path, int width, const std::string& meshes) {

@@ -81,12 +81,21 @@ def load(path, input_domain=None):
     return _tessera.load(_os.fspath(path), _as_domain(input_domain, None, 2.0, "input_domain"))
 
 
-def save(data, path):
+def save(data, path, *, gltf_instancing="gpu"):
     """Write an exemplar or arrangement, chosen by the extension of path, atomically (a
-    failed call leaves no file): .json (with the run statistics of an Arrangement), .csv,
-    .ply, .usda, .gltf/.glb, .obj, .mesh.ply, or a picture .png/.svg. docs/format.md
-    describes each."""
-    _tessera.save(data, _os.fspath(path))
+    failed call leaves no file). docs/format.md describes each format:
+      .json   tessera's native format (with the run statistics of an Arrangement)
+      .csv    one row per sample
+      .ply    one point per element with Houdini's attribute names (P, orient, pscale,
+              class, id, radius, the free attributes)
+      .usda   a USD layer: a UsdGeomPointInstancer whose prototypes are the element types'
+              meshes (default shapes for types without one)
+      .gltf / .glb  glTF 2.0; gltf_instancing="gpu" instances each shared mesh with
+              EXT_mesh_gpu_instancing, "nodes" writes one node per element (for viewers
+              without the extension, Blender 3.4 among them)
+      .obj / .mesh.ply  the elements' triangle meshes
+      .png / .svg  a preview picture"""
+    _tessera.save(data, _os.fspath(path), gltf_instancing)
 
 
 def render(data, path, width=800, meshes="auto"):

@@ -60,11 +60,12 @@ std::vector<TypeGeometry> type_geometry(const Exemplar& data, const GeometryOpti
 // for a vertex no triangle with an area touches.
 std::vector<Vec3> vertex_normals(const TriangleMesh& mesh);
 
-// ---- writers (write_obj.cpp, write_mesh_ply.cpp, write_gltf.cpp) -----------------
+// ---- writers (write_obj.cpp, write_mesh_ply.cpp, write_gltf.cpp, write_usda.cpp) ----
 // The name of an instance in written scenes: type name + "_" + element id.
 std::string instance_name(const Scene& scene, int instance);
 std::string to_obj(const Scene& scene);
 std::string to_mesh_ply(const Scene& scene);
-std::string to_gltf(const Scene& scene, bool binary);
+std::string to_gltf(const Scene& scene, bool binary, GltfInstancing instancing);
+std::string to_usda(const Scene& scene);
 
 }  // namespace tessera::geometry

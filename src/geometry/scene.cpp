@@ -1,6 +1,7 @@
 // geometry/scene.cpp — build_scene: every element of an arrangement rebuilt as a
 // triangle mesh (geometry.hpp): rigid types instance their mesh with the fitted pose,
-// deformable types get a deformed copy each, types without a mesh a default shape.
+// deformable types get a deformed copy each, types without a mesh a default shape
+// (single-sample elements instance one unit sphere per type, scaled by the radius).
 #include <algorithm>
 #include <cmath>
 
@@ -47,6 +48,7 @@ Scene build_scene(const Exemplar& data, const GeometryOptions& options) {
     data.validate("build_scene");
     Scene scene;
     scene.dimension = data.dimension;
+    scene.attribute_names = data.attribute_names;
     for (const ElementType& t : data.types) scene.type_names.push_back(t.name);
     std::vector<geometry::TypeGeometry> types = geometry::type_geometry(data, options);
 
@@ -58,7 +60,14 @@ Scene build_scene(const Exemplar& data, const GeometryOptions& options) {
             scene.meshes.push_back(types[t].mesh);
         }
 
+    // Default spheres: one unit icosphere per type, made on first need.
+    std::vector<int> sphere(types.size(), -1);
     double spacing = -1.0;  // computed on first need
+    const auto default_radius = [&](const Element& el) {
+        if (el.radius > 0.0) return el.radius;
+        if (spacing < 0.0) spacing = default_spacing(data);
+        return (el.sample_count == 1 ? 0.5 : 0.2) * spacing;
+    };
     scene.instances.reserve(data.elements.size());
     for (size_t e = 0; e < data.elements.size(); ++e) {
         const Element& el = data.elements[e];
@@ -70,6 +79,7 @@ Scene build_scene(const Exemplar& data, const GeometryOptions& options) {
         inst.type = el.type;
         inst.scale = el.scale;
         inst.orientation = el.orientation;
+        inst.attributes = el.attributes;
         for (const Vec3& p : points) inst.position += p / el.sample_count;
         const geometry::TypeGeometry& g = types[el.type];
         if (g.has_mesh && data.types[el.type].rigid) {
@@ -79,21 +89,21 @@ Scene build_scene(const Exemplar& data, const GeometryOptions& options) {
             inst.position = pose.position;
             inst.orientation = pose.orientation;
             inst.fit_error = pose.fit_error;
+        } else if (!g.has_mesh && el.sample_count == 1) {
+            if (sphere[el.type] < 0) {
+                sphere[el.type] = static_cast<int>(scene.meshes.size());
+                scene.meshes.push_back(geometry::icosphere({0, 0, 0}, 1.0, options.sphere_subdivisions));
+            }
+            inst.instanced = true;
+            inst.mesh = sphere[el.type];
+            inst.scale = default_radius(el);  // the radius alone, as the previews draw it
         } else {
             inst.mesh = static_cast<int>(scene.meshes.size());
-            if (g.has_mesh) {
+            if (g.has_mesh)
                 scene.meshes.push_back(geometry::deform_mesh(g.mesh, g.reference, points.data(), el.scale,
                                                              options.deform_falloff, data.dimension, el.orientation));
-            } else {
-                double radius = el.radius;
-                if (!(radius > 0.0)) {
-                    if (spacing < 0.0) spacing = default_spacing(data);
-                    radius = (el.sample_count == 1 ? 0.5 : 0.2) * spacing;
-                }
-                scene.meshes.push_back(el.sample_count == 1
-                                           ? geometry::icosphere(points[0], radius, options.sphere_subdivisions)
-                                           : geometry::tube(points, radius, options.tube_sides));
-            }
+            else
+                scene.meshes.push_back(geometry::tube(points, default_radius(el), options.tube_sides));
         }
         scene.instances.push_back(inst);
     }

@@ -12,7 +12,7 @@ namespace tessera {
 
 namespace {
 
-enum class SceneFormat { none, obj, mesh_ply, gltf, glb };
+enum class SceneFormat { none, obj, mesh_ply, gltf, glb, usda };
 
 SceneFormat format_of(const std::string& path) {
     std::string name = std::filesystem::path(path).filename().string();
@@ -24,6 +24,7 @@ SceneFormat format_of(const std::string& path) {
     if (ends_with(".mesh.ply")) return SceneFormat::mesh_ply;
     if (ends_with(".gltf")) return SceneFormat::gltf;
     if (ends_with(".glb")) return SceneFormat::glb;
+    if (ends_with(".usda")) return SceneFormat::usda;
     return SceneFormat::none;
 }
 
@@ -42,22 +43,32 @@ bool is_scene_path(const std::string& path) {
     return format_of(path) != SceneFormat::none;
 }
 
-void write_scene(const Scene& scene, const std::string& path) {
+void write_scene(const Scene& scene, const std::string& path, const SceneWriteOptions& options) {
     switch (format_of(path)) {
         case SceneFormat::obj:
             return write_file_atomic(path, geometry::to_obj(scene));
         case SceneFormat::mesh_ply:
             return write_file_atomic(path, geometry::to_mesh_ply(scene));
         case SceneFormat::gltf:
-            return write_file_atomic(path, geometry::to_gltf(scene, false));
+            return write_file_atomic(path, geometry::to_gltf(scene, false, options.gltf_instancing));
         case SceneFormat::glb:
-            return write_file_atomic(path, geometry::to_gltf(scene, true));
+            return write_file_atomic(path, geometry::to_gltf(scene, true, options.gltf_instancing));
+        case SceneFormat::usda: {
+            std::string text;
+            try {
+                text = geometry::to_usda(scene);
+            } catch (const Error& e) {  // to_usda does not know the file's name
+                if (e.kind() != ErrorKind::input) throw;
+                throw Error(e.kind(), "cannot write scene " + path + ": " + e.what());
+            }
+            return write_file_atomic(path, text);
+        }
         case SceneFormat::none:
             break;
     }
     throw Error(ErrorKind::option, "cannot write scene " + path + ": unsupported extension '" +
                                        std::filesystem::path(path).extension().string() +
-                                       "' (supported: .obj, .mesh.ply, .gltf, .glb)");
+                                       "' (supported: .obj, .mesh.ply, .gltf, .glb, .usda)");
 }
 
 }  // namespace tessera

@@ -1,8 +1,8 @@
-// io/files.cpp — the file-system side of io: load()/save() by extension (in the file,
-// type mesh paths are relative to the JSON file), whole-file reads, and atomic writes
+// io/files.cpp — the file-system side of io: load() by extension (in the file, type
+// mesh paths are relative to the JSON file), whole-file reads, and atomic writes
 // (temporary file in the target directory + rename), so that a failed or interrupted
-// run never leaves a partial output behind (DESIGN.md, "Formats"). Parsing and
-// serialising live in the *_format.cpp files.
+// run never leaves a partial output behind (DESIGN.md, "Formats"). save() is in
+// save.cpp; parsing and serialising live in the *_format.cpp files.
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,7 +16,6 @@
 #include "io/io_util.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
-#include "tessera/render.hpp"
 
 namespace tessera {
 
@@ -96,47 +95,6 @@ Exemplar load(const std::string& path, const LoadOptions& options) {
         if (!type.mesh.empty() && std::filesystem::path(type.mesh).is_relative())
             type.mesh = (directory / type.mesh).lexically_normal().string();
     return data;
-}
-
-namespace {
-
-// A mesh path as the file at `json_path` names it: relative to that file's directory,
-// so that the file and its meshes can move together; absolute when the two share no
-// directory but the root (a relative path would then climb to the root anyway).
-std::string mesh_path_from(const std::string& json_path, const std::string& mesh) {
-    namespace fs = std::filesystem;
-    const fs::path directory = fs::absolute(fs::path(json_path)).parent_path().lexically_normal();
-    const fs::path file = fs::absolute(mesh).lexically_normal();
-    const auto top = [](const fs::path& p) {
-        auto it = p.begin();
-        return it == p.end() || ++it == p.end() ? fs::path() : *it;
-    };
-    const fs::path relative = file.lexically_relative(directory);
-    if (relative.empty() || top(file) != top(directory)) return file.string();
-    return relative.string();
-}
-
-void save_by_extension(const Exemplar& data, const std::string& path, const RunStats* stats) {
-    const std::string extension = extension_of(path);
-    if (extension == ".json")
-        return write_file_atomic(path, to_json_with_mesh_paths(data, stats, [&](const std::string& mesh) {
-                                     return mesh_path_from(path, mesh);
-                                 }));
-    if (extension == ".csv") return write_file_atomic(path, to_csv(data));
-    if (extension == ".ply") return write_file_atomic(path, to_ply(data));
-    if (extension == ".png" || extension == ".svg") return render_to_file(data, path);
-    throw Error(ErrorKind::option, "cannot save " + path + ": unsupported extension '" + extension +
-                                       "' (supported: .json, .csv, .ply, .png, .svg)");
-}
-
-}  // namespace
-
-void save(const Exemplar& data, const std::string& path) {
-    save_by_extension(data, path, nullptr);
-}
-
-void save(const Arrangement& data, const std::string& path) {
-    save_by_extension(data, path, &data.stats);
 }
 
 }  // namespace tessera

@@ -19,6 +19,7 @@
 
 #include <stb_image_write.h>
 
+#include "geometry/gltf_test_util.hpp"
 #include "tessera/tessera.hpp"
 
 namespace fs = std::filesystem;
@@ -114,7 +115,7 @@ class CliSynth : public CliFixture {};
 
 TEST_F(CliSynth, WritesJsonCsvPlyAndPreview) {
     const tessera::Exemplar input = tessera::load(example("poisson_disk_2d.json"));
-    for (const std::string extension : {".json", ".csv", ".ply"}) {
+    for (const std::string extension : {".json", ".csv", ".ply", ".usda"}) {
         SCOPED_TRACE(extension);
         const std::string out = path("out" + extension), preview = path("preview" + extension + ".png");
         const Result r = run("synth " + q(example("poisson_disk_2d.json")) + " -o " + q(out) +
@@ -126,8 +127,17 @@ TEST_F(CliSynth, WritesJsonCsvPlyAndPreview) {
         EXPECT_NE(r.err.find(" s\n"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("done: "), std::string::npos) << r.err;
         EXPECT_TRUE(is_png(preview));
-        if (extension == ".ply") {
-            EXPECT_EQ(read_text(out).rfind("ply\n", 0), 0u);
+        if (extension == ".ply") {  // one point per element, with Houdini's orient components
+            const std::string ply = read_text(out);
+            EXPECT_EQ(ply.rfind("ply\n", 0), 0u);
+            EXPECT_NE(ply.find("property double orient_w\nproperty double pscale\n"), std::string::npos);
+            continue;
+        }
+        if (extension == ".usda") {  // the default spheres as one point instancer
+            const std::string usda = read_text(out);
+            EXPECT_EQ(usda.rfind("#usda 1.0\n", 0), 0u);
+            EXPECT_NE(usda.find("def PointInstancer \"Elements\""), std::string::npos);
+            EXPECT_EQ(usda.find("def Xform \"Meshes\""), std::string::npos);
             continue;
         }
         const tessera::Exemplar output = tessera::load(out);
@@ -592,6 +602,21 @@ TEST_F(CliEdit, SpreadsTheEditAndReportsTheCount) {
     }
     EXPECT_GT(grown, 30);
     EXPECT_LT(grown, 75);  // 5 accent rows of 15, not all of them (the row ends differ)
+}
+
+TEST_F(CliEdit, WritesInstancingFormats) {
+    const std::string base = "edit " + q(example("striped_dots_2d.json")) + " " + q(example("striped_dots_2d_edit.json"));
+    const tessera::Exemplar before = tessera::load(example("striped_dots_2d.json"));
+    const Result usda = run(base + " -o " + q(path("edited.usda")));
+    ASSERT_EQ(usda.code, 0) << usda.err;
+    EXPECT_NE(usda.err.find("scene: " + std::to_string(before.elements.size()) + " instances"), std::string::npos)
+        << usda.err;
+    EXPECT_EQ(read_text(path("edited.usda")).rfind("#usda 1.0\n", 0), 0u);
+    // The dots are spheres: with the nodes fallback, one node each.
+    const Result glb = run(base + " -o " + q(path("edited.gltf")) + " --gltf-instancing nodes -q");
+    ASSERT_EQ(glb.code, 0) << glb.err;
+    EXPECT_EQ(gltf_test::content_nodes(nlohmann::json::parse(read_text(path("edited.gltf")))).size(),
+              before.elements.size());
 }
 
 TEST_F(CliEdit, UnknownElementFailsAndWritesNothing) {

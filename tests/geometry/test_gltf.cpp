@@ -1,34 +1,17 @@
-// glTF 2.0 output (geometry.hpp): the .gltf document parses, holds one node per element
-// with the pose of instanced ones, consistent accessors, buffer views and an embedded
-// buffer whose positions lie within the accessors' bounds; the .glb container is sound.
+// glTF 2.0 output (geometry.hpp): the .gltf document parses, holds (with node-per-element
+// instancing) one node per element with the pose of instanced ones, consistent accessors,
+// buffer views and an embedded buffer whose positions lie within the accessors' bounds;
+// the .glb container is sound. EXT_mesh_gpu_instancing: test_gltf_instancing.cpp.
 #include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "geometry_test_util.hpp"
+#include "gltf_test_util.hpp"
 
 using namespace geometry_test;
-using Json = nlohmann::json;
+using namespace gltf_test;
 
 namespace {
-
-std::vector<unsigned char> base64_decode(const std::string& text) {
-    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::vector<unsigned char> out;
-    unsigned value = 0;
-    int bits = 0;
-    for (char c : text) {
-        if (c == '=') break;
-        const size_t d = alphabet.find(c);
-        if (d == std::string::npos) continue;
-        value = (value << 6) | static_cast<unsigned>(d);
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            out.push_back(static_cast<unsigned char>((value >> bits) & 0xff));
-        }
-    }
-    return out;
-}
 
 // Checks every accessor against its buffer view and the buffer, and the POSITION bounds
 // and index ranges against the data in `buffer`.
@@ -75,33 +58,29 @@ void check_accessors(const Json& doc, const std::vector<unsigned char>& buffer) 
 
 class SceneGltf : public TempDir {};
 
-std::uint32_t u32(const std::string& bytes, size_t at) {
-    std::uint32_t v;
-    std::memcpy(&v, bytes.data() + at, 4);
-    return v;
-}
-
 }  // namespace
 
 TEST_F(SceneGltf, DocumentHasOneNodePerElementAndConsistentBuffers) {
     const Exemplar ex = mixed_exemplar(write_mesh("tetra.obj", tetrahedron()));
     const Scene scene = build_scene(ex);
-    write_scene(scene, path("scene.gltf"));
+    write_scene(scene, path("scene.gltf"), {.gltf_instancing = GltfInstancing::nodes});
     const Json doc = Json::parse(read("scene.gltf"));
     EXPECT_EQ(doc["asset"]["version"], "2.0");
-    ASSERT_EQ(doc["nodes"].size(), ex.elements.size());
-    EXPECT_EQ(doc["scenes"][0]["nodes"].size(), ex.elements.size());
-    // One mesh for the rigid type with a mesh, one each for the other 5 elements.
-    EXPECT_EQ(doc["meshes"].size(), 1u + 5u);
+    const Json nodes = content_nodes(doc);
+    ASSERT_EQ(nodes.size(), ex.elements.size());
+    // One mesh for the rigid type with a mesh, one sphere for the balls, one each for the
+    // two worms and the rope.
+    EXPECT_EQ(doc["meshes"].size(), 1u + 1u + 3u);
+    EXPECT_FALSE(doc.contains("extensionsUsed"));
     for (size_t i = 0; i < ex.elements.size(); ++i) {
-        const Json& node = doc["nodes"][i];
+        const Json& node = nodes[i];
         const SceneInstance& inst = scene.instances[i];
         EXPECT_EQ(node["name"], ex.types[ex.elements[i].type].name + "_" + std::to_string(ex.elements[i].id));
         if (!inst.instanced) {
             EXPECT_FALSE(node.contains("rotation"));
             continue;
         }
-        EXPECT_EQ(node["mesh"], 0);  // shared by the three shards
+        EXPECT_EQ(node["mesh"], inst.type == 0 ? 0 : 1);  // the shards' mesh, the balls' sphere
         const Json& r = node["rotation"];  // glTF order: x, y, z, w
         EXPECT_EQ(r[0].get<double>(), inst.orientation.x);
         EXPECT_EQ(r[1].get<double>(), inst.orientation.y);

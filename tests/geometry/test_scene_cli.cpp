@@ -9,6 +9,7 @@
 #include <set>
 
 #include "geometry_test_util.hpp"
+#include "gltf_test_util.hpp"
 #include "tessera/io.hpp"
 
 using namespace geometry_test;
@@ -81,9 +82,24 @@ TEST_F(SceneCli, SynthWritesAGltfThatParses) {
     EXPECT_NE(r.err.find("scene: "), std::string::npos) << r.err;
     const nlohmann::json doc = nlohmann::json::parse(read("out/result.gltf"));
     EXPECT_EQ(doc["asset"]["version"], "2.0");
-    // One node per element of the same synthesis.
+    // Every element of the same synthesis: an instance of an instancing node (the shards,
+    // the balls) or a node of its own (the worms).
     const Exemplar result = load(path("out/result.json"));
-    EXPECT_EQ(doc["nodes"].size(), result.elements.size());
+    size_t elements = 0;
+    for (const auto& node : gltf_test::content_nodes(doc)) {
+        if (!node.contains("extensions")) {
+            ++elements;
+            continue;
+        }
+        const auto& attributes = node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"];
+        elements += doc["accessors"][attributes["TRANSLATION"].get<size_t>()]["count"].get<size_t>();
+    }
+    EXPECT_EQ(elements, result.elements.size());
+    // The fallback: one node per element.
+    const CliRun nodes = run("synth " + q("in/mix.json") + " -o " + q("out/nodes.gltf") +
+                             " --iterations 1 --seed 5 -q --gltf-instancing nodes");
+    ASSERT_EQ(nodes.code, 0) << nodes.err;
+    EXPECT_EQ(gltf_test::content_nodes(nlohmann::json::parse(read("out/nodes.gltf"))).size(), result.elements.size());
     // The saved arrangement names the mesh relative to itself, so it rebuilds too.
     EXPECT_NE(read("out/result.json").find(R"("mesh":"../in/meshes/tetra.obj")"), std::string::npos);
     const CliRun again = run("scene " + q("out/result.json") + " -o " + q("out/again.obj"));
@@ -96,11 +112,15 @@ TEST_F(SceneCli, SceneCommandReportsWhatItWrote) {
     // One line: instances, meshes, triangles, max rigid fit error.
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     const TriangleMesh mesh = read_triangle_mesh(path("out/mix.obj"));
-    const std::string expected = "scene: 7 instances, 5 meshes, " + std::to_string(mesh.triangles.size()) +
+    // Meshes: the shards', the balls' sphere, one per worm.
+    const std::string expected = "scene: 7 instances, 4 meshes, " + std::to_string(mesh.triangles.size()) +
                                  " triangles, max rigid fit error ";
     EXPECT_EQ(r.err.rfind(expected, 0), 0u) << r.err;
-    for (const char* format : {"mix.mesh.ply", "mix.glb", "mix.gltf"})
+    for (const char* format : {"mix.mesh.ply", "mix.glb", "mix.gltf", "mix.usda"})
         EXPECT_EQ(run("scene " + q("in/mix.json") + " -o " + q(std::string("out/") + format) + " -q").code, 0);
+    EXPECT_EQ(read("out/mix.usda").rfind("#usda 1.0\n", 0), 0u);
+    EXPECT_NE(read("out/mix.usda").find("def PointInstancer \"Elements\""), std::string::npos);
+    EXPECT_EQ(run("scene " + q("in/mix.json") + " -o " + q("out/nodes.glb") + " -q --gltf-instancing nodes").code, 0);
 }
 
 TEST_F(SceneCli, SynthToAMissingDirectoryWritesNothing) {
@@ -115,6 +135,10 @@ TEST_F(SceneCli, ErrorsLeaveNoFile) {
     expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.stl")), 2, ".stl");
     expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.obj") + " --tube-sides 2"), 2,
                    "--tube-sides");
+    expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.glb") + " --gltf-instancing all"), 2,
+                   "--gltf-instancing must be gpu or nodes, got 'all'");
+    expect_failure(run("synth " + q("in/mix.json") + " -o " + q("out/mix.glb") + " --gltf-instancing x"), 2,
+                   "--gltf-instancing");
     fs::remove(path("in/meshes/tetra.obj"));
     expect_failure(run("scene " + q("in/mix.json") + " -o " + q("out/mix.glb")), 5, "tetra.obj");
     // synth finds the missing mesh before synthesizing.

@@ -50,8 +50,15 @@ TEST(GeometryShapes, DefaultShapesInTheScene) {
     options.tube_sides = 6;
     const Scene scene = build_scene(ex, options);
     ASSERT_EQ(scene.instances.size(), 4u);
-    EXPECT_EQ(scene.meshes.size(), 4u);
-    for (const SceneInstance& inst : scene.instances) EXPECT_FALSE(inst.instanced);
+    // The dots share one unit sphere, instanced with their radius as scale (so instancing
+    // outputs carry them as points); the sticks' tubes follow their samples, meshes of their own.
+    EXPECT_EQ(scene.meshes.size(), 3u);
+    EXPECT_TRUE(scene.instances[0].instanced && scene.instances[1].instanced);
+    EXPECT_EQ(scene.instances[0].mesh, scene.instances[1].mesh);
+    EXPECT_EQ(scene.instances[0].scale, 0.3);
+    EXPECT_EQ(scene.instances[0].position, Vec3(1, 1, 0));
+    for (const Vec3& v : scene.meshes[scene.instances[0].mesh].vertices) EXPECT_NEAR(norm(v), 1.0, 1e-12);
+    EXPECT_FALSE(scene.instances[2].instanced || scene.instances[3].instanced);
     const double spacing = mean_nearest_neighbor_distance(ex);
     const auto radius_of_sphere = [&](int i) { return norm(scene.world_mesh(i).vertices[0] - ex.samples[ex.elements[i].first_sample].p); };
     EXPECT_NEAR(radius_of_sphere(0), 0.3, 1e-12);

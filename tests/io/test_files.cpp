@@ -1,6 +1,6 @@
-// Tests for the file side of io (src/io/files.cpp): load/save by extension, error
-// kinds and messages naming the path, and atomic writes that leave neither a partial
-// output nor a temporary file behind.
+// Tests for the file side of io (src/io/files.cpp, src/io/save.cpp): load/save by
+// extension, error kinds and messages naming the path, and atomic writes that leave
+// neither a partial output nor a temporary file behind.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -139,10 +139,33 @@ TEST_F(IoFiles, LoadErrorsNameTheFile) {
     expect_error([&] { load(path("dir.json")); }, ErrorKind::io, "cannot read " + path("dir.json"));
 }
 
+// save() reaches every writer, for an Exemplar and an Arrangement alike: scene formats
+// without a separate build_scene call.
+TEST_F(IoFiles, SaveWritesEveryExtension) {
+    Arrangement arrangement;
+    static_cast<Exemplar&>(arrangement) = small_exemplar();
+    const std::vector<std::pair<std::string, std::string>> starts = {
+        {"json", "{"},       {"csv", "x,y"},        {"ply", "ply\n"},        {"usda", "#usda 1.0\n"},
+        {"gltf", "{"},       {"glb", "glTF"},       {"obj", "# tessera"}, {"mesh.ply", "ply\n"},
+        {"png", "\x89PNG"}, {"svg", "<?xml"}};
+    for (const auto& [extension, start] : starts) {
+        save(small_exemplar(), path("ex." + extension));
+        save(arrangement, path("arr." + extension));
+        for (const std::string& name : {"ex." + extension, "arr." + extension})
+            EXPECT_EQ(read_file(path(name)).rfind(start, 0), 0u) << name;
+    }
+    EXPECT_EQ(read_file(path("ex.mesh.ply")).find("element face"), read_file(path("arr.mesh.ply")).find("element face"));
+    EXPECT_NE(read_file(path("ex.mesh.ply")).find("element face"), std::string::npos);  // the scene, not points
+    EXPECT_TRUE(temporary_files().empty());
+    EXPECT_EQ(save_scene(small_exemplar(), path("scene.usda")).instances.size(), 3u);
+    expect_error([&] { save_scene(small_exemplar(), path("points.ply")); }, ErrorKind::option, path("points.ply"));
+}
+
 TEST_F(IoFiles, SaveRejectsUnknownExtension) {
     expect_error([&] { save(small_exemplar(), path("out.xyz")); }, ErrorKind::option, path("out.xyz"));
     expect_error([&] { save(small_exemplar(), path("noextension")); }, ErrorKind::option,
                  path("noextension"));
+    expect_error([&] { save(small_exemplar(), path("out.usdc")); }, ErrorKind::option, ".usda");
     EXPECT_FALSE(fs::exists(path("out.xyz")));
 }
 

@@ -188,10 +188,13 @@ def check_file(path, instancing):
     if not cli:
         return
     with tempfile.TemporaryDirectory() as tmp:
-        for ext in ("gltf", "obj"):
-            subprocess.run([cli, "scene", path, "-o", os.path.join(tmp, "scene." + ext), "-q"], check=True)
+        # glTF with one node per element, so that nodes and elements correspond.
+        subprocess.run([cli, "scene", path, "-o", os.path.join(tmp, "scene.gltf"), "--gltf-instancing", "nodes",
+                        "-q"], check=True)
+        subprocess.run([cli, "scene", path, "-o", os.path.join(tmp, "scene.obj"), "-q"], check=True)
         with open(os.path.join(tmp, "scene.gltf"), encoding="utf-8") as f:
-            nodes = json.load(f)["nodes"]
+            # The last node is the root that turns z-up to glTF's y-up; the others are the elements.
+            nodes = json.load(f)["nodes"][:-1]
         from tessera_blender.data import read_obj_objects
         objects = read_obj_objects(os.path.join(tmp, "scene.obj"))
     check(len(nodes) == len(expected) and len(objects) == len(expected),
@@ -200,7 +203,11 @@ def check_file(path, instancing):
     for index, (obj, node) in enumerate(zip(result.objects, nodes)):
         # tessera refits a rigid pose (Kabsch) when the element's own orientation fits its
         # samples worse than rounding (hand-made exemplars); compare where it cannot have.
+        # Default spheres are one unit sphere scaled by the radius in tessera's scene and a
+        # sphere of that radius here: they are compared by their world-space vertices below.
         if "translation" not in node or obj.get("tessera_fit_error", 0.0) > 1e-7:
+            continue
+        if not types.get(expected[index][0], {}).get("mesh"):
             continue
         compared += 1
         what = f"{label}: element {index} ({obj.name}) against tessera's glTF node {node.get('name')!r}"
@@ -210,7 +217,7 @@ def check_file(path, instancing):
         sign = 1.0 if rotation.dot(mathutils.Quaternion((w, x, y, z))) >= 0 else -1.0
         close([sign * c for c in rotation], (w, x, y, z), f"{what}: rotation")
         close(scale, node["scale"], f"{what}: scale")
-    instanced = sum(1 for n in nodes if "translation" in n)
+    instanced = sum(1 for i, n in enumerate(nodes) if "translation" in n and types.get(expected[i][0], {}).get("mesh"))
     deformable = [i for i, x in enumerate(expected)
                   if types.get(x[0], {}).get("mesh") and not types[x[0]].get("rigid", True)]
     for index in sorted({deformable[0], deformable[-1]} if deformable else set()):
