@@ -15,7 +15,9 @@ double candidate_error(const State& s, int c, const Vec3& p, double r, double fi
     double* R = sc.near_sum.data();
     double* D = sc.near_ref.data();
 
-    double E = 0.0;
+    // Separations from unrelated classes only grow as pairs are added: checked first.
+    double E = s.separation_violation(c, p, r) * s.separation_scale;
+    if (E > limit) return kInfinity;
     for (int t : s.class_terms[c]) {
         const Term& T = s.terms[t];
         // The mean term can only grow from base_max (contributions are >= 0).
@@ -75,7 +77,7 @@ double envelope_violation(const State& s, int i, Scratch& sc) {
     const Elem& e = s.elems[i];
     const CircleProfile& own = s.profiles[i];
     double* R = sc.near_sum.data();
-    double v = 0.0;
+    double v = s.separation_violation(e.cls, e.p, e.r) * s.separation_scale;
     for (int t : s.class_terms[e.cls]) {
         const Term& T = s.terms[t];
         std::fill(R, R + bins, 0.0);

@@ -155,6 +155,8 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
     // element's individual PCFs further above their upper envelopes than they are now,
     // beyond kMoveTolerance, so that refinement does not push elements onto each other.
     const double excess_limit = std::max(kMoveTolerance, upper_excess(s, e.cls, sc.near_sum.data(), sc.old_lo, sc.old_hi));
+    // Separations from unrelated classes: a move may not take the element further inside.
+    const double separation_limit = s.separation_violation(e.cls, e.p, e.r);
     for (int slot = 0; slot < slots; ++slot) {
         const Term& T = s.terms[ts[slot]];
         const double* loc = local + static_cast<size_t>(slot) * bins;
@@ -188,6 +190,7 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
         const double step = kTrialSteps[index];
         const Vec3 q = e.p + direction * (step * s.r_max);
         if (!s.domain.inside(q)) return kInfinity;
+        if (s.separation_violation(e.cls, q, e.r) > separation_limit) return kInfinity;
         s.begin_profile(q, sc.profile);
         const double excess = pairs_at(s, e.cls, q, e.r, sc.profile, sc, sc.trial, sc.trial_lo, sc.trial_hi);
         if (excess > excess_limit) return kInfinity;

@@ -98,6 +98,27 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     }
     for (int t = 0; t < static_cast<int>(terms.size()); ++t) refresh(t);
 
+    // Separations, both ways: a class checks those placed before it (the others are empty).
+    separations.assign(classes, {});
+    separation_scale = 1.0 / (kFloor * axis.sigma);
+    for (const PcfSeparation& sep : model.separations) {
+        if (!(sep.x > 0.0)) continue;
+        const auto add = [&](int c, int other) {
+            // Beyond contact x = 3 + gap / r_max; up to it a pair overlaps (d <= r1 + r2).
+            // `reach` leaves out the element's own radius, added per query.
+            Separation s;
+            s.other = other;
+            s.x = sep.x;
+            const double ro = max_of(radii[other]);
+            s.reach = model.disks ? std::max(0.0, sep.x - 3.0) * r_max + ro : sep.x * r_max;
+            if (min_of(radii[c]) <= 0.0 && min_of(radii[other]) <= 0.0) s.reach = std::max(s.reach, sep.x * r_max);
+            s.reach *= 1.0 + 1e-9;
+            separations[c].push_back(s);
+        };
+        add(sep.a, sep.b);
+        add(sep.b, sep.a);
+    }
+
     // The grid: cells of a quarter of the largest query radius (a query visits about 1.6
     // times the area of its disc), coarser if there would be too many.
     const Box b = domain.bounds();

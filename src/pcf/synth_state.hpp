@@ -87,6 +87,14 @@ struct CellEntry {
     double x = 0.0, y = 0.0;
 };
 
+// A separation (PcfSeparation) as class c sees it: elements of `other` stay at least x
+// apart on the normalised axis; pairs further apart than `reach` (Euclidean) always are.
+struct Separation {
+    int other = 0;
+    double x = 0.0;
+    double reach = 0.0;
+};
+
 class State {
 public:
     // elements: the output's radii per class (all unplaced).
@@ -104,6 +112,11 @@ public:
     std::vector<Elem> elems;
     std::vector<CircleProfile> profiles;        // per element (placed ones)
     std::vector<std::vector<int>> members;      // per class: its element indices (largest radius first)
+    std::vector<std::vector<Separation>> separations;  // per class: the classes it must stay apart from
+    // A separation violation of dx on the normalised axis counts as dx / (kFloor sigma) in
+    // the candidate error: a tenth of a kernel width inside weighs as much as a pair where
+    // the exemplar has none (an upper envelope at the floor).
+    double separation_scale = 0.0;
 
     // The kernel values k_sigma(x_k - x) of the bins a pair at x touches: value(m) is bin
     // lo + m. They come from a table over the position of x between two bins (1024 steps,
@@ -208,6 +221,19 @@ public:
     void refresh(int t);
     // sum_k (mean_k - target_k)^2 of a term (the refinement's error).
     double term_error(int t) const;
+    // How far (normalised axis) an element of class c with radius r at p comes inside the
+    // separations of its class from placed elements of other classes: the largest
+    // x_min - x over those pairs, 0 when it keeps them all.
+    double separation_violation(int c, const Vec3& p, double r) const {
+        double v = 0.0;
+        for (const Separation& sep : separations[c])
+            for_each_near(sep.other, p, sep.reach + r, [&](int j) {
+                const Elem& o = elems[j];
+                v = std::max(v, sep.x - pair(distance(p, o.p), r, o.r).x);
+                return true;
+            });
+        return v;
+    }
     // Placed elements of class c.
     int placed(int c) const { return placed_[c]; }
 

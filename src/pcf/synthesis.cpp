@@ -93,6 +93,10 @@ void check_model(const PcfModel& m) {
             if (!std::isfinite(e.mean[k]) || !std::isfinite(e.lower[k]) || !std::isfinite(e.upper[k]))
                 bad_model("the PCF of " + m.classes[e.parent] + " -> " + m.classes[e.child] + " has a value that is not finite");
     }
+    for (const PcfSeparation& sep : m.separations)
+        if (sep.a < 0 || sep.a >= classes || sep.b < 0 || sep.b >= classes || sep.a == sep.b ||
+            !(std::isfinite(sep.x) && sep.x >= 0.0))
+            bad_model("a separation needs two different classes and a distance >= 0");
 }
 
 // Section 4.3: the exemplar's radii repeated as often as they fit, the shortfall drawn at

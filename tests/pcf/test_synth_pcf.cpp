@@ -140,6 +140,32 @@ TEST(PcfSynth, ClusteredClassStaysAroundItsParents) {
     EXPECT_NEAR(got / in, 1.0, 0.15) << "input " << in << ", output " << got;
 }
 
+TEST(PcfSynth, ClassesWithoutAPcfKeepTheirSeparation) {
+    // Two independent disk classes that never overlap in the exemplar (a Poisson-disk set
+    // split in two): no PCF links them, the separation keeps them apart in the output.
+    Exemplar ex = test::poisson_disk(120, 12.0, 0.9, 5, 0.3);
+    ex.types[0].name = "odd";
+    ex.types[0].depends_on = std::vector<std::string>{};
+    const int even = ex.type_index("even");
+    ex.types[even].depends_on = std::vector<std::string>{};
+    for (size_t i = 0; i < ex.elements.size(); i += 2) ex.elements[i].type = even;
+    const PcfModel model = analyze_distribution(ex);
+    ASSERT_EQ(model.separations.size(), 1u);
+    EXPECT_GT(model.separations[0].x, 3.0);  // the exemplar's disks never touch
+    const Arrangement out = synthesize_pcf(model, ex.domain.scaled(1.5), quick(3, 10));
+    double closest = 1e300;
+    for (size_t i = 0; i < out.elements.size(); ++i)
+        for (size_t j = i + 1; j < out.elements.size(); ++j)
+            if (out.elements[i].type != out.elements[j].type)
+                closest = std::min(closest, disk_metric_normalised(norm(out.elements[i].position - out.elements[j].position),
+                                                                   out.elements[i].radius, out.elements[j].radius,
+                                                                   model.r_max));
+    // The separation is a penalty in the candidate error (a tenth of a kernel width inside
+    // weighs like a neighbour where the exemplar has none): no overlaps, at most a trace inside.
+    EXPECT_GT(closest, 3.0);
+    EXPECT_GE(closest, model.separations[0].x - 0.01);
+}
+
 TEST(PcfSynth, RadiiAreDrawnFromTheExemplars) {
     Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 12);
     for (size_t i = 0; i < ex.elements.size(); ++i) ex.elements[i].radius = 0.1 + 0.01 * i;  // all different
