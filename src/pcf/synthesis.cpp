@@ -239,7 +239,6 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
 
             const double before = class_error();
             const pcf::State::Snapshot snap = state.snapshot(c);
-            const size_t energies = stats.energy.size();
             for (int i : elements) state.remove(i);
             run_init(c, elements, round);
             const int bound_hit = run_refine(c, members, outlier_sweeps);
@@ -249,8 +248,6 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
                                      std::to_string(members.size()) + " elements re-placed";
             if (after > before * (1.0 + kOutlierSlack)) {
                 state.restore(c, snap);
-                stats.energy.resize(energies);
-                stats.iteration_seconds.resize(energies);
                 stats.notes.push_back(what + ", undone (its PCF error rose from " + format(before) + " to " +
                                       format(after) + ")");
                 break;
