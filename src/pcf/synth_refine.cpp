@@ -23,9 +23,10 @@ namespace tessera::pcf {
 
 namespace {
 
-// How far a move may lift an element's individual PCF above the upper envelope (relative
-// to the envelope, as Eq. 11), unless it is already further above.
-constexpr double kMoveTolerance = 0.25;
+// How far a move may lift an element's individual PCF above the upper envelope, or drop it
+// below the lower one (relative to the envelope, as Eq. 11), unless it is already further
+// outside.
+constexpr double kMoveTolerance = 0.05;
 
 struct Neighbour {
     int slot = 0;    // which of the class's terms
@@ -54,6 +55,19 @@ double upper_excess(const State& s, int c, const double* raw, const std::vector<
         const Term& T = s.terms[ts[slot]];
         const double* r = raw + slot * s.bins;
         for (int k = lo[slot]; k <= hi[slot]; ++k) v = std::max(v, (T.ind_norm[k] * r[k] - T.upper[k]) * T.inv_upper[k]);
+    }
+    return v;
+}
+
+// max over the class's PCFs and bins of (lower - individual) / max(lower, floor), >= 0
+// (only bins with a lower envelope above 0 can count).
+double lower_shortfall(const State& s, int c, const double* raw) {
+    const std::vector<int>& ts = s.class_terms[c];
+    double v = 0.0;
+    for (size_t slot = 0; slot < ts.size(); ++slot) {
+        const Term& T = s.terms[ts[slot]];
+        const double* r = raw + slot * s.bins;
+        for (int k = T.lower_lo; k <= T.lower_hi; ++k) v = std::max(v, (T.lower[k] - T.ind_norm[k] * r[k]) * T.inv_lower[k]);
     }
     return v;
 }
@@ -151,10 +165,13 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
         sc.old_lo[nb.slot] = std::min(sc.old_lo[nb.slot], sp.lo);
         sc.old_hi[nb.slot] = std::max(sc.old_hi[nb.slot], sp.lo + sp.n - 1);
     }
-    // Variance-aware moves (section 5.1 applied to refinement): a move may not lift the
-    // element's individual PCFs further above their upper envelopes than they are now,
-    // beyond kMoveTolerance, so that refinement does not push elements onto each other.
+    // Variance-aware moves (section 5.1 applied to refinement): a move may not take the
+    // element's individual PCFs further outside their envelopes than they are now, beyond
+    // kMoveTolerance: above the upper ones (refinement would push elements onto each
+    // other) or below the lower ones (it would pull them out of configurations every
+    // exemplar element has, such as a glass touching its plate).
     const double excess_limit = std::max(kMoveTolerance, upper_excess(s, e.cls, sc.near_sum.data(), sc.old_lo, sc.old_hi));
+    const double shortfall_limit = std::max(kMoveTolerance, lower_shortfall(s, e.cls, sc.near_sum.data()));
     // Separations from unrelated classes: a move may not take the element further inside.
     const double separation_limit = s.separation_violation(e.cls, e.p, e.r);
     for (int slot = 0; slot < slots; ++slot) {
@@ -194,6 +211,7 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
         s.begin_profile(q, sc.profile);
         const double excess = pairs_at(s, e.cls, q, e.r, sc.profile, sc, sc.trial, sc.trial_lo, sc.trial_hi);
         if (excess > excess_limit) return kInfinity;
+        if (lower_shortfall(s, e.cls, sc.near_sum.data()) > shortfall_limit) return kInfinity;
         double change = 0.0;
         for (int slot = 0; slot < slots; ++slot) {
             const Term& T = s.terms[ts[slot]];

@@ -83,6 +83,12 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
             t.inv_upper[k] = 1.0 / std::max(env.upper[k], kFloor);
             t.inv_lower[k] = 1.0 / std::max(env.lower[k], kFloor);
         }
+        t.lower_lo = bins;
+        for (int k = 0; k < bins; ++k)
+            if (env.lower[k] > 0.0) {
+                t.lower_lo = std::min(t.lower_lo, k);
+                t.lower_hi = k;
+            }
         t.target = env.mean;
         t.lower = env.lower;
         t.upper = env.upper;

@@ -51,6 +51,7 @@ struct Term {
     std::vector<double> ind_norm;  // individual PCF = ind_norm_k * (its share of sum_k)
     std::vector<double> target, lower, upper;
     std::vector<double> inv_target, inv_upper, inv_lower;  // 1 / max(value, kFloor)
+    int lower_lo = 0, lower_hi = -1;                       // the bins where lower > 0
     std::vector<double> sum;                               // the running sum of Eq. 2
     double base_max = 0.0;  // max_k (mean_k - target_k) * inv_target_k of the current state
     double reach = 0.0;     // Euclidean distance beyond which a pair of these classes is off the axis
