@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <numeric>
 
 #include "core/parallel.hpp"
@@ -31,6 +32,10 @@ constexpr double kMoveTolerance = 0.25;
 // so a tight bound there costs the descent little; a tight upper bound does (5% there
 // raised the relative PCF error of the dense ecosystem from 0.019 to 0.028).
 constexpr double kLowerTolerance = 0.05;
+
+// The refinement's stall test compares the mean error of the last kStallSweeps sweeps with
+// that of the kStallSweeps before.
+constexpr size_t kStallSweeps = 10;
 
 struct Neighbour {
     int slot = 0;    // which of the class's terms
@@ -297,6 +302,9 @@ RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_i
     const double tw = w / tx, th = h / ty;
     std::vector<RefineScratch> scratch(std::max(1, threads));
 
+    std::vector<double> energies;  // after each sweep, for the stall test
+    double best_energy = std::numeric_limits<double>::infinity();
+    State::Snapshot best;  // the class at its lowest error so far
     for (int sweep = 0; sweep < max_iterations; ++sweep) {
         // Tiles by the positions at the start of the sweep, elements in the given order.
         std::vector<std::vector<int>> tiles(static_cast<size_t>(tx) * ty);
@@ -352,11 +360,33 @@ RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_i
         for (int t : ts) energy += s.term_error(t);
         ++report.sweeps;
         on_sweep(energy);
-        if (movement < convergence * s.r_max) {
+        if (energy < best_energy) {
+            best_energy = energy;
+            best = s.snapshot(c);
+        }
+        // Converged when the elements moved by less than convergence x r_max on average (per
+        // element: large classes converge as readily as small ones), or when the error
+        // stalled: the mean of the last kStallSweeps sweeps is less than a fraction
+        // `convergence` per sweep below the mean of the kStallSweeps before. Near the
+        // error's floor the elements keep trading moves (each tile of a colour improves the
+        // sums it sees, together they overshoot and the error jitters), so the movement
+        // alone need not fall.
+        energies.push_back(energy);
+        const size_t n = energies.size();
+        bool stalled = false;
+        if (convergence > 0.0 && n >= 2 * kStallSweeps) {
+            double before = 0.0, recent = 0.0;
+            for (size_t k = n - 2 * kStallSweeps; k < n - kStallSweeps; ++k) before += energies[k];
+            for (size_t k = n - kStallSweeps; k < n; ++k) recent += energies[k];
+            stalled = before - recent <= convergence * static_cast<double>(kStallSweeps) * before;
+        }
+        if (movement < convergence * s.r_max * static_cast<double>(elements.size()) || stalled) {
             report.converged = true;
             break;
         }
     }
+    // The class leaves at its lowest error: a jittering last sweep must not cost the fit.
+    if (report.sweeps > 0 && best_energy < energies.back()) s.restore(c, best);
     return report;
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/rng.hpp"
 #include "pcf/pcf_math.hpp"
+#include "pcf/analysis_test_data.hpp"
 #include "pcf/synth_test_data.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
@@ -221,6 +222,25 @@ TEST(PcfSynth, RefinementBoundIsReported) {
     const Arrangement none = synthesize_pcf(model, ex.domain, o);
     EXPECT_EQ(none.stats.solver_bound_hits, 0);
     EXPECT_TRUE(none.stats.energy.empty());
+}
+
+TEST(PcfSynth, LargeClassConvergesAndKeepsItsLowestError) {
+    // 240 elements of one class: the convergence test is per element (or a stalled
+    // error), so the refinement ends before max_iterations, at its lowest error.
+    const Exemplar ex = test::poisson_points(60, 8.0, 4);
+    const PcfModel model = analyze_distribution(ex);
+    PcfSynthOptions o = quick(5, 100);
+    o.outlier_rounds = 0;
+    const Arrangement out = synthesize_pcf(model, ex.domain.scaled(2.0), o);
+    EXPECT_EQ(out.elements.size(), 4 * ex.elements.size());
+    EXPECT_EQ(out.stats.solver_bound_hits, 0);
+    EXPECT_LT(out.stats.energy.size(), 100u);
+    ASSERT_FALSE(out.stats.energy.empty());
+    EXPECT_DOUBLE_EQ(out.stats.final_energy, *std::min_element(out.stats.energy.begin(), out.stats.energy.end()));
+    // convergence 0: every sweep runs.
+    o.convergence = 0.0;
+    o.max_iterations = 21;
+    EXPECT_EQ(synthesize_pcf(model, ex.domain.scaled(2.0), o).stats.energy.size(), 21u);
 }
 
 TEST(PcfSynth, ProgressReportsAndCancels) {
