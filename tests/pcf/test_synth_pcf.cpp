@@ -3,6 +3,8 @@
 // class, polygon domains, fallbacks, bounds and errors.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -207,6 +209,15 @@ TEST(PcfSynth, GridSearchFallbackIsCountedAndNoted) {
     const bool noted = std::any_of(out.stats.notes.begin(), out.stats.notes.end(),
                                    [](const std::string& n) { return n.find("grid search") != std::string::npos; });
     EXPECT_TRUE(noted);
+    // Both are in the output's "stats" (max_fails 0: grid search from the first element).
+    o.max_fails = 0;
+    const Arrangement grid = synthesize_pcf(model, ex.domain, o);
+    EXPECT_EQ(grid.stats.fallbacks, static_cast<int>(grid.elements.size()));
+    const nlohmann::json stats = nlohmann::json::parse(to_json(grid, &grid.stats))["stats"];
+    EXPECT_EQ(stats["fallbacks"].get<int>(), grid.stats.fallbacks);
+    ASSERT_EQ(stats["notes"].size(), grid.stats.notes.size());
+    for (size_t k = 0; k < grid.stats.notes.size(); ++k) EXPECT_EQ(stats["notes"][k].get<std::string>(), grid.stats.notes[k]);
+    EXPECT_NE(stats["notes"][0].get<std::string>().find("grid search placed"), std::string::npos);
 }
 
 TEST(PcfSynth, RefinementBoundIsReported) {
