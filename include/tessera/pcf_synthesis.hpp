@@ -117,9 +117,9 @@ struct PcfSynthOptions {
     int max_fails = 1000;
     int grid_cells = 64;
     // Refinement (Eq. 4 to 6): at most max_iterations sweeps per class; stops when a sweep
-    // moves the elements by less than convergence * r_max on average, or when the class's
-    // PCF error over the last 10 sweeps is less than a fraction `convergence` per sweep
-    // below that of the 10 before; the class is left at its lowest error.
+    // moves the elements by less than convergence * r_max in total, or when the class's
+    // lowest PCF error fell by less than a fraction `convergence` per sweep over the last
+    // 10 sweeps (0: never); the class is left at its lowest error.
     int max_iterations = 100;
     double convergence = 1e-3;
     // Re-initialise elements whose individual PCF leaves the validity region after

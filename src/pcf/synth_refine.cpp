@@ -33,8 +33,7 @@ constexpr double kMoveTolerance = 0.25;
 // raised the relative PCF error of the dense ecosystem from 0.019 to 0.028).
 constexpr double kLowerTolerance = 0.05;
 
-// The refinement's stall test compares the mean error of the last kStallSweeps sweeps with
-// that of the kStallSweeps before.
+// The refinement's stall test looks at the lowest error over this many sweeps.
 constexpr size_t kStallSweeps = 10;
 
 struct Neighbour {
@@ -364,23 +363,21 @@ RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_i
             best_energy = energy;
             best = s.snapshot(c);
         }
-        // Converged when the elements moved by less than convergence x r_max on average (per
-        // element: large classes converge as readily as small ones), or when the error
-        // stalled: the mean of the last kStallSweeps sweeps is less than a fraction
-        // `convergence` per sweep below the mean of the kStallSweeps before. Near the
-        // error's floor the elements keep trading moves (each tile of a colour improves the
-        // sums it sees, together they overshoot and the error jitters), so the movement
-        // alone need not fall.
+        // Converged when the sweep moved the elements by less than convergence x r_max in
+        // total (the paper's test), or when the error stalled: over the last kStallSweeps
+        // sweeps its lowest value fell by less than a fraction `convergence` per sweep. Large
+        // classes rarely pass the first: near the error's floor the tiles of a colour each
+        // improve the sums they see and together overshoot, so the elements keep moving
+        // while the error jitters by a few percent. (A mean movement per element instead
+        // stopped small classes while a few of their elements were still settling.)
         energies.push_back(energy);
         const size_t n = energies.size();
         bool stalled = false;
         if (convergence > 0.0 && n >= 2 * kStallSweeps) {
-            double before = 0.0, recent = 0.0;
-            for (size_t k = n - 2 * kStallSweeps; k < n - kStallSweeps; ++k) before += energies[k];
-            for (size_t k = n - kStallSweeps; k < n; ++k) recent += energies[k];
-            stalled = before - recent <= convergence * static_cast<double>(kStallSweeps) * before;
+            const double before = *std::min_element(energies.begin(), energies.end() - kStallSweeps);
+            stalled = before - best_energy <= convergence * static_cast<double>(kStallSweeps) * before;
         }
-        if (movement < convergence * s.r_max * static_cast<double>(elements.size()) || stalled) {
+        if (movement < convergence * s.r_max || stalled) {
             report.converged = true;
             break;
         }

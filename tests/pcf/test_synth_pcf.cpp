@@ -236,8 +236,8 @@ TEST(PcfSynth, RefinementBoundIsReported) {
 }
 
 TEST(PcfSynth, LargeClassConvergesAndKeepsItsLowestError) {
-    // 240 elements of one class: the convergence test is per element (or a stalled
-    // error), so the refinement ends before max_iterations, at its lowest error.
+    // 240 elements of one class: they keep moving, but the error stalls, so the refinement
+    // ends before max_iterations, at its lowest error.
     const Exemplar ex = test::poisson_points(60, 8.0, 4);
     const PcfModel model = analyze_distribution(ex);
     PcfSynthOptions o = quick(5, 100);
