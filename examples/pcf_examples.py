@@ -134,29 +134,50 @@ def droplets():
 
 
 def table_set():
-    """Figure 12 (middle): plates on a table, bowls nested on some plates, glasses touching
-    plates, food items inside plates, candies anywhere (may overlap anything)."""
+    """Figure 12 (middle): plates on a table, a glass touching each plate, a bowl beside half of
+    the plates (chosen at random), food items inside plates, candies anywhere (may overlap
+    anything). As in the paper's description, glasses, bowls and plates may touch but do not
+    overlap, food overlaps (lies in) plates, candies may overlap anything.
+
+    Bowls used to be nested on the first half of the plates placed. Those are the most spread
+    out ones, so the 7 bowls' own PCF said "never on neighbouring plates"; at 4x the area the
+    bowls then had to sit on a near-maximal set of pairwise distant plates, which the greedy
+    initialisation of Algorithm 1 does not find, and the bowls left over landed beside the
+    plates, outside the nested envelope every exemplar bowl is in (docs/pcf_synthesis.md,
+    known limitations)."""
     s = Scene((160.0, 100.0), 44)
     s.place("plate", 16, lambda g: g.uniform(9.5, 10.5), lambda x, y, r: clear_of(s, x, y, r, "plate", 8.0), margin=11)
     plates = [d for d in s.disks if d[3] == "plate"]
-    for x, y, r, _ in plates[: len(plates) // 2]:  # bowls sit centred on half the plates
-        s.disks.append((x + s.rng.gauss(0, 0.3), y + s.rng.gauss(0, 0.3), s.rng.uniform(5.5, 6.5), "bowl"))
     for x, y, r, _ in plates:  # a glass touching each plate, up and to the right
         a = s.rng.uniform(0.6, 1.1)
         gr = s.rng.uniform(2.6, 3.2)
         s.disks.append((x + (r + gr + 0.2) * math.cos(a), y + (r + gr + 0.2) * math.sin(a), gr, "glass"))
-    bowls = [d for d in s.disks if d[3] == "bowl"]
+    order = list(range(len(plates)))
+    s.rng.shuffle(order)
+    bowls = 0
+    for k in order:  # a bowl touching a random half of the plates, on the left, clear of everything
+        if bowls == len(plates) // 2:
+            break
+        x, y, r, _ = plates[k]
+        for _ in range(50):
+            a = s.rng.uniform(2.4, 3.9)
+            br = s.rng.uniform(4.0, 4.8)
+            bx, by = x + (r + br + 0.2) * math.cos(a), y + (r + br + 0.2) * math.sin(a)
+            inside = br < bx < s.size[0] - br and br < by < s.size[1] - br
+            if inside and all(math.hypot(d[0] - bx, d[1] - by) > d[2] + br + 0.1 for d in s.disks):
+                s.disks.append((bx, by, br, "bowl"))
+                bowls += 1
+                break
 
     def on_plate(x, y, r):
         inside = any(math.hypot(d[0] - x, d[1] - y) < d[2] - r for d in plates)
-        in_bowl = any(math.hypot(d[0] - x, d[1] - y) < d[2] + r for d in bowls)
-        return inside and not in_bowl and clear_of(s, x, y, r, "food", 0.2)
+        return inside and clear_of(s, x, y, r, "food", 0.2)
 
     s.place("food", 80, lambda g: g.uniform(1.5, 2.2), on_plate)
     s.place("candy", 50, lambda g: g.uniform(0.8, 1.1), lambda x, y, r: clear_of(s, x, y, r, "candy", 2.0))
     s.write("table_set", ["plate", "bowl", "glass", "food", "candy"],
-            "A table set: plates; bowls nested on half of them; a glass touching each plate; food "
-            "inside plates (not in bowls); candies anywhere.",
+            "A table set: plates; a glass touching each plate; a bowl beside half of them; food "
+            "inside plates; candies anywhere.",
             {"plate": [], "bowl": ["plate"], "glass": ["plate", "bowl"], "food": ["plate", "bowl"],
              "candy": ["plate"]})
 

@@ -329,7 +329,9 @@ Subcommand add_synth_command(CLI::App& app) {
                     "pcf: increase of the threshold with every successive rejection, >= 0.")
         ->capture_default_str();
     cmd->add_option("--convergence", args->pcf.convergence,
-                    "pcf: refinement stops when a sweep moves the elements by less than this x r_max in total, >= 0.")
+                    "pcf: a class's refinement stops when a sweep moves its elements by less than this x r_max in "
+                    "total, or when its lowest PCF error falls by less than this fraction per sweep over 10 sweeps, "
+                    ">= 0 (0: never).")
         ->capture_default_str();
     cmd->add_option("--outlier-rounds", args->pcf.outlier_rounds,
                     "pcf: rounds of re-placing elements whose individual PCFs leave the validity region, >= 0.")

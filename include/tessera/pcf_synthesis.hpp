@@ -64,12 +64,24 @@ struct PcfEnvelope {
     std::vector<double> upper;    // highest individual PCF at each x
 };
 
+// Two classes without a PCF between them (neither depends on the other): the closest
+// approach of their elements in the exemplar on the normalised axis, at most the end of
+// the salient configurations plus one kernel width (3 + sigma for disks, sigma for
+// points). Synthesis keeps every pair of elements of these classes at least this far
+// apart, so that classes the dependency graph leaves unrelated do not overlap (or nest)
+// where the exemplar's never do. 0 when the exemplar has such a pair at distance 0.
+struct PcfSeparation {
+    int a = 0, b = 0;  // class indices, a < b
+    double x = 0.0;    // on the normalised axis
+};
+
 // The analysed exemplar: everything synthesis needs.
 struct PcfModel {
     std::vector<std::string> classes;        // element type names, in the exemplar's order
     std::vector<std::vector<int>> parents;   // dependency DAG: parents[c] = the classes c depends on
     std::vector<int> order;                  // a topological order of the classes
     std::vector<PcfEnvelope> pcfs;           // one per class (within) and one per DAG edge
+    std::vector<PcfSeparation> separations;  // one per pair of classes without an edge, (a, b) in index order
     std::vector<double> x;                   // the normalised axis: x_k = k * step
     std::vector<int> counts;                 // elements per class in the exemplar
     std::vector<std::vector<double>> radii;  // per class: the exemplar's radii, sorted largest first
@@ -104,8 +116,10 @@ struct PcfSynthOptions {
     double epsilon_step = 0.001;
     int max_fails = 1000;
     int grid_cells = 64;
-    // Refinement (Eq. 4 to 6): at most max_iterations sweeps; stops when the total movement
-    // of a sweep is below convergence * r_max.
+    // Refinement (Eq. 4 to 6): at most max_iterations sweeps per class; stops when a sweep
+    // moves the elements by less than convergence * r_max in total, or when the class's
+    // lowest PCF error fell by less than a fraction `convergence` per sweep over the last
+    // 10 sweeps (0: never); the class is left at its lowest error.
     int max_iterations = 100;
     double convergence = 1e-3;
     // Re-initialise elements whose individual PCF leaves the validity region after

@@ -479,6 +479,8 @@ OrderedJson stats_json(const RunStats& stats) {
     out["final_energy"] = stats.final_energy;
     out["radius"] = stats.radius;
     out["solver_bound_hits"] = stats.solver_bound_hits;
+    out["fallbacks"] = stats.fallbacks;
+    out["notes"] = stats.notes;
     out["seed"] = stats.seed;
     if (stats.physics)
         out["physics"] = {{"interpenetrating_pairs", {stats.penetrations_before, stats.penetrations_after}},

@@ -101,6 +101,20 @@ PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSetting
     for (int k = 0; k < axis.bins; ++k) model.x[k] = axis.x(k);
     model.pcfs = pcf::estimate_pcfs(points, classes, exemplar.domain, model.area, model.r_max, axis,
                                     pcf::pcf_pairs(model.parents, model.order));
+    // Class pairs without a PCF: their closest approach, up to the salient configurations.
+    std::vector<std::pair<int, int>> unrelated;
+    for (int a = 0; a < classes; ++a)
+        for (int b = a + 1; b < classes; ++b) {
+            const auto depends = [&](int child, int parent) {
+                return std::find(model.parents[child].begin(), model.parents[child].end(), parent) !=
+                       model.parents[child].end();
+            };
+            if (!depends(a, b) && !depends(b, a)) unrelated.push_back({a, b});
+        }
+    const std::vector<double> closest = pcf::closest_approaches(points, exemplar.domain, model.r_max, unrelated, classes,
+                                                                pcf::separation_cap(settings, model.disks));
+    for (size_t q = 0; q < unrelated.size(); ++q)
+        model.separations.push_back({unrelated[q].first, unrelated[q].second, closest[q]});
     return model;
 }
 

@@ -25,7 +25,7 @@ using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
 constexpr const char* model_format = "tessera-pcf-model";
-constexpr int model_version = 1;
+constexpr int model_version = 2;
 
 class ModelReader {
 public:
@@ -43,14 +43,19 @@ public:
             fail("", "invalid JSON: " + message);
         }
         object(doc, "");
-        keys(doc, {"format", "version", "settings", "r_max", "area", "classes", "order", "x", "pcfs"}, "");
         const Json& format = require(doc, "format", "");
         if (!format.is_string() || format.get<std::string>() != model_format)
             fail("format", std::string("must be \"") + model_format + "\", got " + format.dump());
         const Json& version = require(doc, "version", "");
-        if (!version.is_number_integer() || version.get<long long>() != model_version)
-            fail("version", "unsupported version " + version.dump() + " (this build reads version " +
+        if (!version.is_number_integer() || version.get<long long>() < 1 || version.get<long long>() > model_version)
+            fail("version", "unsupported version " + version.dump() + " (this build reads versions 1 to " +
                                 std::to_string(model_version) + ")");
+        // Version 1 had no separations (models analysed before them synthesize without).
+        const bool separations = version.get<long long>() >= 2;
+        if (separations)
+            keys(doc, {"format", "version", "settings", "r_max", "area", "classes", "order", "x", "pcfs", "separations"}, "");
+        else
+            keys(doc, {"format", "version", "settings", "r_max", "area", "classes", "order", "x", "pcfs"}, "");
         PcfModel m;
         read_settings(require(doc, "settings", ""), m.settings);
         m.r_max = positive(require(doc, "r_max", ""), "r_max");
@@ -59,6 +64,7 @@ public:
         read_order(require(doc, "order", ""), m);
         read_axis(require(doc, "x", ""), m);
         read_pcfs(require(doc, "pcfs", ""), m);
+        if (separations) read_separations(require(doc, "separations", ""), m);
         return m;
     }
 
@@ -230,6 +236,35 @@ private:
                 fail("pcfs", p == c ? "missing the PCF of class '" + m.classes[c] + "'"
                                     : "missing the PCF of '" + m.classes[c] + "' on '" + m.classes[p] + "'");
     }
+
+    // Exactly one per pair of classes without a dependency between them, a before b.
+    void read_separations(const Json& v, PcfModel& m) const {
+        array(v, "separations");
+        const int classes = static_cast<int>(m.classes.size());
+        const auto depends = [&](int child, int parent) {
+            return std::find(m.parents[child].begin(), m.parents[child].end(), parent) != m.parents[child].end();
+        };
+        std::set<std::pair<int, int>> seen;
+        for (size_t q = 0; q < v.size(); ++q) {
+            const std::string where = at("separations", q);
+            object(v[q], where);
+            keys(v[q], {"a", "b", "x"}, where);
+            PcfSeparation sep;
+            sep.a = class_index(v[q]["a"], m, at(where, "a"));
+            sep.b = class_index(v[q]["b"], m, at(where, "b"));
+            if (sep.a >= sep.b) fail(where, "a must be a class listed before b");
+            if (depends(sep.a, sep.b) || depends(sep.b, sep.a))
+                fail(where, "'" + m.classes[sep.a] + "' and '" + m.classes[sep.b] + "' have a PCF between them");
+            if (!seen.insert({sep.a, sep.b}).second) fail(where, "the pair is listed twice");
+            sep.x = number(v[q]["x"], at(where, "x"));
+            if (sep.x < 0.0) fail(at(where, "x"), "must be >= 0, got " + v[q]["x"].dump());
+            m.separations.push_back(sep);
+        }
+        for (int a = 0; a < classes; ++a)
+            for (int b = a + 1; b < classes; ++b)
+                if (!depends(a, b) && !depends(b, a) && !seen.count({a, b}))
+                    fail("separations", "missing the pair '" + m.classes[a] + "', '" + m.classes[b] + "'");
+    }
 };
 
 }  // namespace
@@ -267,7 +302,14 @@ std::string pcf_model_to_json(const PcfModel& m) {
         out += "     \"upper\": " + OrderedJson(e.upper).dump() + "}";
         out += q + 1 < m.pcfs.size() ? ",\n" : "\n";
     }
-    out += "  ]\n}\n";
+    out += "  ],\n";
+    out += "  \"separations\": [";
+    for (size_t q = 0; q < m.separations.size(); ++q) {
+        const PcfSeparation& sep = m.separations[q];
+        const OrderedJson item{{"a", name(sep.a)}, {"b", name(sep.b)}, {"x", sep.x}};
+        out += (q == 0 ? "\n    " : ",\n    ") + item.dump();
+    }
+    out += m.separations.empty() ? "]\n}\n" : "\n  ]\n}\n";
     return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/parallel.hpp"
 #include "pcf/neighbour_grid.hpp"
+#include "pcf/pair_distance.hpp"
 #include "pcf/pcf_accumulate.hpp"
 #include "tessera/error.hpp"
 
@@ -146,6 +147,47 @@ std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, con
             // The average of values lies between their extremes; rounding must not say otherwise.
             e.mean[k] = std::clamp(e.mean[k], e.lower[k], e.upper[k]);
         }
+    }
+    return out;
+}
+
+std::vector<double> closest_approaches(const PcfPoints& points, const Domain& domain, double r_max,
+                                       const std::vector<std::pair<int, int>>& pairs, int classes, double cap) {
+    std::vector<double> out(pairs.size(), cap);
+    if (pairs.empty()) return out;
+    std::vector<std::vector<int>> slot(classes, std::vector<int>(classes, -1));
+    for (size_t q = 0; q < pairs.size(); ++q) {
+        slot[pairs[q].first][pairs[q].second] = static_cast<int>(q);
+        slot[pairs[q].second][pairs[q].first] = static_cast<int>(q);
+    }
+    const int n = static_cast<int>(points.p.size());
+    double largest = 0.0;
+    bool has_points = false;
+    for (int i = 0; i < n; ++i) {
+        largest = std::max(largest, points.radius[i]);
+        has_points = has_points || !(points.radius[i] > 0.0);
+    }
+    // Centre distance within which a pair can be closer than cap on the axis.
+    const auto reach = [&](double ra, double rb) {
+        if (!(ra > 0.0) && !(rb > 0.0)) return cap * r_max;
+        return std::max(0.0, cap - 3.0) * r_max + ra + rb;
+    };
+    const double cell = std::max({reach(largest, largest), has_points ? reach(0.0, 0.0) : 0.0, 1e-12 * r_max});
+    NeighbourGrid grid(domain.bounds(), cell, n);
+    for (int i = 0; i < n; ++i)
+        if (points.cls[i] >= 0) grid.insert(i, points.p[i]);
+    for (int i = 0; i < n; ++i) {
+        const int a = points.cls[i];
+        if (a < 0) continue;
+        const double ri = points.radius[i];
+        const double query = std::max(reach(ri, largest), !(ri > 0.0) && has_points ? reach(0.0, 0.0) : 0.0);
+        grid.for_each_within(points.p[i], query, [&](int j, double d2) {
+            if (j <= i || points.cls[j] < 0) return;
+            const int q = slot[a][points.cls[j]];
+            if (q < 0) return;
+            const double x = normalised_pair_distance(std::sqrt(d2), ri, points.radius[j], r_max);
+            out[q] = std::min(out[q], x);
+        });
     }
     return out;
 }

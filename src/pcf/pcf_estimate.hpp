@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pcf/pcf_math.hpp"
@@ -37,5 +38,11 @@ PcfPoints pcf_points(const Exemplar& data, const std::vector<int>& class_of_type
 // number of threads (fixed blocks, reduced in order).
 std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, const Domain& domain, double area,
                                        double r_max, const Axis& axis, const std::vector<PcfEnvelope>& pairs);
+
+// The closest approach on the normalised axis (pair_distance.hpp) between the elements of
+// each class pair of `pairs` (two different classes), at most `cap`: cap when no pair of
+// these classes comes closer. Exact (every pair within the distance that reaches cap).
+std::vector<double> closest_approaches(const PcfPoints& points, const Domain& domain, double r_max,
+                                       const std::vector<std::pair<int, int>>& pairs, int classes, double cap);
 
 }  // namespace tessera::pcf

@@ -50,6 +50,10 @@ inline Axis make_axis(const PcfAnalysisSettings& s, bool disks) {
     return a;
 }
 
+// How far apart synthesis keeps classes without a PCF between them at most (PcfSeparation):
+// the salient configurations of disks end at contact, x = 3; one kernel width beyond.
+inline double separation_cap(const PcfAnalysisSettings& s, bool disks) { return (disks ? 3.0 : 0.0) + s.sigma; }
+
 // Fraction of the circle of radius rho around p that lies in the domain (section 3.1's
 // boundary correction weight), estimated from 64 points on the circle for every kind of
 // domain (within 1/64 of the exact fraction); 1 when rho <= 0.

@@ -9,13 +9,23 @@
 
 namespace tessera::pcf {
 
+namespace {
+
+// The grid search's zoom into its chosen cell: levels, and sub-cells per side.
+constexpr int kZoomLevels = 2;
+constexpr int kZoom = 4;
+
+}  // namespace
+
 double candidate_error(const State& s, int c, const Vec3& p, double r, double fill, double limit, Scratch& sc) {
     const int bins = s.bins;
     s.begin_profile(p, sc.profile);
     double* R = sc.near_sum.data();
     double* D = sc.near_ref.data();
 
-    double E = 0.0;
+    // Separations from unrelated classes only grow as pairs are added: checked first.
+    double E = s.separation_violation(c, p, r) * s.separation_scale;
+    if (E > limit) return kInfinity;
     for (int t : s.class_terms[c]) {
         const Term& T = s.terms[t];
         // The mean term can only grow from base_max (contributions are >= 0).
@@ -75,7 +85,7 @@ double envelope_violation(const State& s, int i, Scratch& sc) {
     const Elem& e = s.elems[i];
     const CircleProfile& own = s.profiles[i];
     double* R = sc.near_sum.data();
-    double v = 0.0;
+    double v = s.separation_violation(e.cls, e.p, e.r) * s.separation_scale;
     for (int t : s.class_terms[e.cls]) {
         const Term& T = s.terms[t];
         std::fill(R, R + bins, 0.0);
@@ -184,6 +194,31 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
             if (chosen >= 0) {
                 p = point(chosen);
                 ++report.by_grid;
+                // Zoom: the chosen cell again at kZoom x kZoom sub-cells (a keyed random point
+                // in each), then the best sub-cell likewise; the lowest error wins (the first
+                // in order on ties). One random point per cell rarely lands where a tight
+                // configuration needs it (touching or centred on a parent).
+                double best = lowest;
+                Vec3 corner{b.lo.x + (chosen % nx) * cell_size, b.lo.y + (chosen / nx) * cell_size, 0.0};
+                double size = cell_size;
+                std::uint64_t key = 2 * static_cast<std::uint64_t>(cells) + 1;  // after the cells' and the tie's
+                for (int level = 0; level < kZoomLevels && best > 0.0; ++level) {
+                    const double sub = size / kZoom;
+                    Vec3 best_corner = corner;
+                    for (int k = 0; k < kZoom * kZoom; ++k, key += 2) {
+                        const Vec3 at{corner.x + (k % kZoom) * sub, corner.y + (k / kZoom) * sub, 0.0};
+                        const Vec3 q{at.x + jitter.uniform(key) * sub, at.y + jitter.uniform(key + 1) * sub, 0.0};
+                        if (!s.domain.inside(q)) continue;
+                        const double E = candidate_error(s, c, q, r, fill, best, scratch[0]);
+                        if (E < best) {
+                            best = E;
+                            p = q;
+                            best_corner = at;
+                        }
+                    }
+                    corner = best_corner;
+                    size = sub;
+                }
             } else {
                 // No cell's point fell inside (a domain thinner than a cell): any point inside.
                 if (!draw_inside(p)) p = s.domain.closest_inside(b.lo + (b.hi - b.lo) * 0.5);

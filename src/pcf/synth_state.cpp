@@ -83,6 +83,12 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
             t.inv_upper[k] = 1.0 / std::max(env.upper[k], kFloor);
             t.inv_lower[k] = 1.0 / std::max(env.lower[k], kFloor);
         }
+        t.lower_lo = bins;
+        for (int k = 0; k < bins; ++k)
+            if (env.lower[k] > 0.0) {
+                t.lower_lo = std::min(t.lower_lo, k);
+                t.lower_hi = k;
+            }
         t.target = env.mean;
         t.lower = env.lower;
         t.upper = env.upper;
@@ -97,6 +103,27 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
         terms.push_back(std::move(t));
     }
     for (int t = 0; t < static_cast<int>(terms.size()); ++t) refresh(t);
+
+    // Separations, both ways: a class checks those placed before it (the others are empty).
+    separations.assign(classes, {});
+    separation_scale = 1.0 / (kFloor * axis.sigma);
+    for (const PcfSeparation& sep : model.separations) {
+        if (!(sep.x > 0.0)) continue;
+        const auto add = [&](int c, int other) {
+            // Beyond contact x = 3 + gap / r_max; up to it a pair overlaps (d <= r1 + r2).
+            // `reach` leaves out the element's own radius, added per query.
+            Separation s;
+            s.other = other;
+            s.x = sep.x;
+            const double ro = max_of(radii[other]);
+            s.reach = model.disks ? std::max(0.0, sep.x - 3.0) * r_max + ro : sep.x * r_max;
+            if (min_of(radii[c]) <= 0.0 && min_of(radii[other]) <= 0.0) s.reach = std::max(s.reach, sep.x * r_max);
+            s.reach *= 1.0 + 1e-9;
+            separations[c].push_back(s);
+        };
+        add(sep.a, sep.b);
+        add(sep.b, sep.a);
+    }
 
     // The grid: cells of a quarter of the largest query radius (a query visits about 1.6
     // times the area of its disc), coarser if there would be too many.

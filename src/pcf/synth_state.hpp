@@ -51,6 +51,7 @@ struct Term {
     std::vector<double> ind_norm;  // individual PCF = ind_norm_k * (its share of sum_k)
     std::vector<double> target, lower, upper;
     std::vector<double> inv_target, inv_upper, inv_lower;  // 1 / max(value, kFloor)
+    int lower_lo = 0, lower_hi = -1;                       // the bins where lower > 0
     std::vector<double> sum;                               // the running sum of Eq. 2
     double base_max = 0.0;  // max_k (mean_k - target_k) * inv_target_k of the current state
     double reach = 0.0;     // Euclidean distance beyond which a pair of these classes is off the axis
@@ -87,6 +88,14 @@ struct CellEntry {
     double x = 0.0, y = 0.0;
 };
 
+// A separation (PcfSeparation) as class c sees it: elements of `other` stay at least x
+// apart on the normalised axis; pairs further apart than `reach` (Euclidean) always are.
+struct Separation {
+    int other = 0;
+    double x = 0.0;
+    double reach = 0.0;
+};
+
 class State {
 public:
     // elements: the output's radii per class (all unplaced).
@@ -104,6 +113,11 @@ public:
     std::vector<Elem> elems;
     std::vector<CircleProfile> profiles;        // per element (placed ones)
     std::vector<std::vector<int>> members;      // per class: its element indices (largest radius first)
+    std::vector<std::vector<Separation>> separations;  // per class: the classes it must stay apart from
+    // A separation violation of dx on the normalised axis counts as dx / (kFloor sigma) in
+    // the candidate error: a tenth of a kernel width inside weighs as much as a pair where
+    // the exemplar has none (an upper envelope at the floor).
+    double separation_scale = 0.0;
 
     // The kernel values k_sigma(x_k - x) of the bins a pair at x touches: value(m) is bin
     // lo + m. They come from a table over the position of x between two bins (1024 steps,
@@ -208,6 +222,19 @@ public:
     void refresh(int t);
     // sum_k (mean_k - target_k)^2 of a term (the refinement's error).
     double term_error(int t) const;
+    // How far (normalised axis) an element of class c with radius r at p comes inside the
+    // separations of its class from placed elements of other classes: the largest
+    // x_min - x over those pairs, 0 when it keeps them all.
+    double separation_violation(int c, const Vec3& p, double r) const {
+        double v = 0.0;
+        for (const Separation& sep : separations[c])
+            for_each_near(sep.other, p, sep.reach + r, [&](int j) {
+                const Elem& o = elems[j];
+                v = std::max(v, sep.x - pair(distance(p, o.p), r, o.r).x);
+                return true;
+            });
+        return v;
+    }
     // Placed elements of class c.
     int placed(int c) const { return placed_[c]; }
 

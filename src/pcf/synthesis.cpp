@@ -93,6 +93,10 @@ void check_model(const PcfModel& m) {
             if (!std::isfinite(e.mean[k]) || !std::isfinite(e.lower[k]) || !std::isfinite(e.upper[k]))
                 bad_model("the PCF of " + m.classes[e.parent] + " -> " + m.classes[e.child] + " has a value that is not finite");
     }
+    for (const PcfSeparation& sep : m.separations)
+        if (sep.a < 0 || sep.a >= classes || sep.b < 0 || sep.b >= classes || sep.a == sep.b ||
+            !(std::isfinite(sep.x) && sep.x >= 0.0))
+            bad_model("a separation needs two different classes and a distance >= 0");
 }
 
 // Section 4.3: the exemplar's radii repeated as often as they fit, the shortfall drawn at
@@ -235,7 +239,6 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
 
             const double before = class_error();
             const pcf::State::Snapshot snap = state.snapshot(c);
-            const size_t energies = stats.energy.size();
             for (int i : elements) state.remove(i);
             run_init(c, elements, round);
             const int bound_hit = run_refine(c, members, outlier_sweeps);
@@ -245,8 +248,6 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
                                      std::to_string(members.size()) + " elements re-placed";
             if (after > before * (1.0 + kOutlierSlack)) {
                 state.restore(c, snap);
-                stats.energy.resize(energies);
-                stats.iteration_seconds.resize(energies);
                 stats.notes.push_back(what + ", undone (its PCF error rose from " + format(before) + " to " +
                                       format(after) + ")");
                 break;

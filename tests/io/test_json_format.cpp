@@ -152,9 +152,12 @@ TEST(IoJson, ArrangementStatsAreWrittenAndIgnoredOnRead) {
     a.stats.total_seconds = 0.75;
     a.stats.threads = 2;
     a.stats.seed = 18446744073709551615ull;
+    a.stats.fallbacks = 3;
+    a.stats.notes = {"grid search placed 3 of 8 elements", "a \"quoted\" note"};
     const std::string text = to_json(a, &a.stats);
     for (const char* fragment : {"\"stats\":", "\"method\":\"det\"", "\"energy\":[3.5,2.25,2.0]",
-                                 "\"seed\":18446744073709551615"})
+                                 "\"seed\":18446744073709551615", "\"fallbacks\":3",
+                                 "\"notes\":[\"grid search placed 3 of 8 elements\",\"a \\\"quoted\\\" note\"]"})
         EXPECT_NE(text.find(fragment), std::string::npos) << fragment << "\n" << text;
     // Timings and the thread count vary between runs of the same synthesis: not written.
     for (const char* fragment : {"seconds", "\"threads\""})

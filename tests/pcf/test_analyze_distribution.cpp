@@ -211,6 +211,33 @@ TEST(PcfAnalysis, ExplicitDependencies) {
     EXPECT_EQ(mixed.parents, (std::vector<std::vector<int>>{{}, {}, {0, 1}}));
 }
 
+TEST(PcfAnalysis, SeparationsOfClassesWithoutAPcf) {
+    // a and b independent (no PCF between them), c depends on both: one separation, a-b,
+    // the closest approach of an a and a b on the normalised axis.
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    const int a = ex.type_index("a"), b = ex.type_index("b"), c = ex.type_index("c");
+    ex.types[a].depends_on = std::vector<std::string>{};
+    ex.types[b].depends_on = std::vector<std::string>{};
+    ex.add_element(a, {Vec3{2, 2, 0}}, 1.0);
+    ex.add_element(a, {Vec3{8, 8, 0}}, 1.0);
+    ex.add_element(b, {Vec3{2, 4, 0}}, 0.5);  // 0.5 apart from the first a
+    ex.add_element(b, {Vec3{8, 5, 0}}, 0.5);
+    ex.add_element(c, {Vec3{5, 5, 0}}, 0.2);
+    ex.add_element(c, {Vec3{2.1, 2, 0}}, 0.2);  // inside an a: c has PCFs with a and b, no separation
+    const PcfModel m = analyze_distribution(ex);
+    ASSERT_EQ(m.separations.size(), 1u);
+    EXPECT_EQ(m.separations[0].a, a);
+    EXPECT_EQ(m.separations[0].b, b);
+    EXPECT_NEAR(m.separations[0].x, 3.0 + 0.5 / m.r_max, 1e-12);
+    // Never closer than 3 + sigma: the cap (beyond the salient configurations).
+    ex.elements[2].position = Vec3{2, 6, 0};
+    ex.samples[ex.elements[2].first_sample].p = Vec3{2, 6, 0};
+    EXPECT_DOUBLE_EQ(analyze_distribution(ex).separations[0].x, 3.0 + PcfAnalysisSettings{}.sigma);
+    // The default graph connects every pair: no separations.
+    EXPECT_TRUE(analyze_distribution(test::three_classes()).separations.empty());
+}
+
 TEST(PcfAnalysis, EdgePcfUsesChildAsReference) {
     // 2 parents, 40 children: the envelope is over the child's 40 elements. Children
     // are all far (> 3 r_max) from the parents except one, close to parent 0.

@@ -65,10 +65,29 @@ TEST(PcfModelJson, RoundTripIsExact) {
         EXPECT_EQ(back.pcfs[q].lower, m.pcfs[q].lower);
         EXPECT_EQ(back.pcfs[q].upper, m.pcfs[q].upper);
     }
+    ASSERT_EQ(back.separations.size(), m.separations.size());
+    for (size_t q = 0; q < m.separations.size(); ++q) {
+        EXPECT_EQ(back.separations[q].a, m.separations[q].a);
+        EXPECT_EQ(back.separations[q].b, m.separations[q].b);
+        EXPECT_EQ(back.separations[q].x, m.separations[q].x);
+    }
     EXPECT_EQ(pcf_model_to_json(back), text);
     // A measurement with the read model gives what the original gives.
     EXPECT_EQ(measure_distribution(back, test::three_classes())[0].mean,
               measure_distribution(m, test::three_classes())[0].mean);
+}
+
+TEST(PcfModelJson, VersionOneHasNoSeparations) {
+    // Models written before separations existed read as before, without them.
+    const std::string text = edited([](nlohmann::json& j) {
+        j["version"] = 1;
+        j.erase("separations");
+    });
+    const PcfModel m = pcf_model_from_json(text, "old.json");
+    EXPECT_TRUE(m.separations.empty());
+    EXPECT_EQ(m.pcfs.size(), sample_model().pcfs.size());
+    EXPECT_NE(error_of(edited([](nlohmann::json& j) { j["version"] = 1; })).find("unknown key 'separations'"),
+              std::string::npos);
 }
 
 TEST(PcfModelJson, PointModelRoundTrips) {
@@ -86,7 +105,13 @@ TEST(PcfModelJson, StrictReading) {
     } cases[] = {
         {[](nlohmann::json& j) { j["colour"] = 1; }, {"unknown key 'colour'"}},
         {[](nlohmann::json& j) { j.erase("r_max"); }, {"missing \"r_max\""}},
-        {[](nlohmann::json& j) { j["version"] = 2; }, {"version", "2"}},
+        {[](nlohmann::json& j) { j["version"] = 3; }, {"version", "3"}},
+        {[](nlohmann::json& j) { j.erase("separations"); }, {"missing \"separations\""}},
+        {[](nlohmann::json& j) { j["separations"] = nlohmann::json::array(); }, {"separations", "missing the pair 'b', 'c'"}},
+        {[](nlohmann::json& j) { j["separations"][0]["x"] = -1; }, {"separations[0].x", ">= 0"}},
+        {[](nlohmann::json& j) { j["separations"][0]["a"] = "c"; }, {"separations[0]", "before b"}},
+        {[](nlohmann::json& j) { j["separations"].push_back({{"a", "a"}, {"b", "b"}, {"x", 1.0}}); },
+         {"separations[1]", "have a PCF between them"}},
         {[](nlohmann::json& j) { j["format"] = "tessera"; }, {"format"}},
         {[](nlohmann::json& j) { j["settings"]["sigma"] = 0; }, {"settings.sigma"}},
         {[](nlohmann::json& j) { j["r_max"] = -1; }, {"r_max", "> 0"}},

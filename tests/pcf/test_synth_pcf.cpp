@@ -3,6 +3,8 @@
 // class, polygon domains, fallbacks, bounds and errors.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -11,6 +13,7 @@
 
 #include "core/rng.hpp"
 #include "pcf/pcf_math.hpp"
+#include "pcf/analysis_test_data.hpp"
 #include "pcf/synth_test_data.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
@@ -140,6 +143,32 @@ TEST(PcfSynth, ClusteredClassStaysAroundItsParents) {
     EXPECT_NEAR(got / in, 1.0, 0.15) << "input " << in << ", output " << got;
 }
 
+TEST(PcfSynth, ClassesWithoutAPcfKeepTheirSeparation) {
+    // Two independent disk classes that never overlap in the exemplar (a Poisson-disk set
+    // split in two): no PCF links them, the separation keeps them apart in the output.
+    Exemplar ex = test::poisson_disk(120, 12.0, 0.9, 5, 0.3);
+    ex.types[0].name = "odd";
+    ex.types[0].depends_on = std::vector<std::string>{};
+    const int even = ex.type_index("even");
+    ex.types[even].depends_on = std::vector<std::string>{};
+    for (size_t i = 0; i < ex.elements.size(); i += 2) ex.elements[i].type = even;
+    const PcfModel model = analyze_distribution(ex);
+    ASSERT_EQ(model.separations.size(), 1u);
+    EXPECT_GT(model.separations[0].x, 3.0);  // the exemplar's disks never touch
+    const Arrangement out = synthesize_pcf(model, ex.domain.scaled(1.5), quick(3, 10));
+    double closest = 1e300;
+    for (size_t i = 0; i < out.elements.size(); ++i)
+        for (size_t j = i + 1; j < out.elements.size(); ++j)
+            if (out.elements[i].type != out.elements[j].type)
+                closest = std::min(closest, disk_metric_normalised(norm(out.elements[i].position - out.elements[j].position),
+                                                                   out.elements[i].radius, out.elements[j].radius,
+                                                                   model.r_max));
+    // The separation is a penalty in the candidate error (a tenth of a kernel width inside
+    // weighs like a neighbour where the exemplar has none): no overlaps, at most a trace inside.
+    EXPECT_GT(closest, 3.0);
+    EXPECT_GE(closest, model.separations[0].x - 0.01);
+}
+
 TEST(PcfSynth, RadiiAreDrawnFromTheExemplars) {
     Exemplar ex = test::poisson_disk(40, 10.0, 1.0, 12);
     for (size_t i = 0; i < ex.elements.size(); ++i) ex.elements[i].radius = 0.1 + 0.01 * i;  // all different
@@ -180,6 +209,15 @@ TEST(PcfSynth, GridSearchFallbackIsCountedAndNoted) {
     const bool noted = std::any_of(out.stats.notes.begin(), out.stats.notes.end(),
                                    [](const std::string& n) { return n.find("grid search") != std::string::npos; });
     EXPECT_TRUE(noted);
+    // Both are in the output's "stats" (max_fails 0: grid search from the first element).
+    o.max_fails = 0;
+    const Arrangement grid = synthesize_pcf(model, ex.domain, o);
+    EXPECT_EQ(grid.stats.fallbacks, static_cast<int>(grid.elements.size()));
+    const nlohmann::json stats = nlohmann::json::parse(to_json(grid, &grid.stats))["stats"];
+    EXPECT_EQ(stats["fallbacks"].get<int>(), grid.stats.fallbacks);
+    ASSERT_EQ(stats["notes"].size(), grid.stats.notes.size());
+    for (size_t k = 0; k < grid.stats.notes.size(); ++k) EXPECT_EQ(stats["notes"][k].get<std::string>(), grid.stats.notes[k]);
+    EXPECT_NE(stats["notes"][0].get<std::string>().find("grid search placed"), std::string::npos);
 }
 
 TEST(PcfSynth, RefinementBoundIsReported) {
@@ -195,6 +233,25 @@ TEST(PcfSynth, RefinementBoundIsReported) {
     const Arrangement none = synthesize_pcf(model, ex.domain, o);
     EXPECT_EQ(none.stats.solver_bound_hits, 0);
     EXPECT_TRUE(none.stats.energy.empty());
+}
+
+TEST(PcfSynth, LargeClassConvergesAndKeepsItsLowestError) {
+    // 240 elements of one class: they keep moving, but the error stalls, so the refinement
+    // ends before max_iterations, at its lowest error.
+    const Exemplar ex = test::poisson_points(60, 8.0, 4);
+    const PcfModel model = analyze_distribution(ex);
+    PcfSynthOptions o = quick(5, 100);
+    o.outlier_rounds = 0;
+    const Arrangement out = synthesize_pcf(model, ex.domain.scaled(2.0), o);
+    EXPECT_EQ(out.elements.size(), 4 * ex.elements.size());
+    EXPECT_EQ(out.stats.solver_bound_hits, 0);
+    EXPECT_LT(out.stats.energy.size(), 100u);
+    ASSERT_FALSE(out.stats.energy.empty());
+    EXPECT_DOUBLE_EQ(out.stats.final_energy, *std::min_element(out.stats.energy.begin(), out.stats.energy.end()));
+    // convergence 0: every sweep runs.
+    o.convergence = 0.0;
+    o.max_iterations = 21;
+    EXPECT_EQ(synthesize_pcf(model, ex.domain.scaled(2.0), o).stats.energy.size(), 21u);
 }
 
 TEST(PcfSynth, ProgressReportsAndCancels) {
