@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "tessera/option_text.hpp"
+
 namespace tessera_cli {
 
 int exit_code(tessera::ErrorKind kind) {
@@ -71,10 +73,7 @@ CLI::Option* add_meshes_option(CLI::App& app, std::string& text) {
 }
 
 tessera::RenderOptions::Meshes parse_meshes_option(const std::string& text) {
-    if (text == "auto") return tessera::RenderOptions::Meshes::automatic;
-    if (text == "on") return tessera::RenderOptions::Meshes::on;
-    if (text == "off") return tessera::RenderOptions::Meshes::off;
-    fail_option("--meshes must be auto, on or off, got '" + text + "'");
+    return tessera::parse_render_meshes(text, "--meshes");
 }
 
 CLI::Option* add_gltf_instancing_option(CLI::App& app, std::string& text) {
@@ -88,9 +87,7 @@ CLI::Option* add_gltf_instancing_option(CLI::App& app, std::string& text) {
 }
 
 tessera::GltfInstancing parse_gltf_instancing_option(const std::string& text) {
-    if (text == "gpu") return tessera::GltfInstancing::gpu;
-    if (text == "nodes") return tessera::GltfInstancing::nodes;
-    fail_option("--gltf-instancing must be gpu or nodes, got '" + text + "'");
+    return tessera::parse_gltf_instancing(text, "--gltf-instancing");
 }
 
 CLI::Option* add_threads_option(CLI::App& app, int& threads) {

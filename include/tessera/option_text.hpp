@@ -11,6 +11,8 @@
 #include "tessera/det.hpp"
 #include "tessera/domain.hpp"
 #include "tessera/exemplar.hpp"
+#include "tessera/geometry.hpp"
+#include "tessera/render.hpp"
 
 namespace tessera {
 
@@ -35,6 +37,9 @@ std::vector<DetOptions::BoundarySide> parse_boundary_sides(const std::string& te
 // "kcoherence" | "exhaustive"; "greedy" | "hungarian".
 SearchMode parse_search_mode(const std::string& text, const std::string& parameter);
 Matching parse_matching(const std::string& text, const std::string& parameter);
+// "auto" | "on" | "off" (RenderOptions::meshes); "gpu" | "nodes" (SaveOptions::gltf_instancing).
+RenderOptions::Meshes parse_render_meshes(const std::string& text, const std::string& parameter);
+GltfInstancing parse_gltf_instancing(const std::string& text, const std::string& parameter);
 const char* to_string(SearchMode mode);
 const char* to_string(Matching matching);
 

@@ -8,19 +8,13 @@
 #include "convert.hpp"
 #include "tessera/io.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/option_text.hpp"
 #include "tessera/render.hpp"
 
 namespace py = pybind11;
 
 namespace tessera_python {
 namespace {
-
-tessera::RenderOptions::Meshes meshes_option(const std::string& text) {
-    if (text == "auto") return tessera::RenderOptions::Meshes::automatic;
-    if (text == "on") return tessera::RenderOptions::Meshes::on;
-    if (text == "off") return tessera::RenderOptions::Meshes::off;
-    throw tessera::Error(tessera::ErrorKind::option, "meshes must be 'auto', 'on' or 'off', got '" + text + "'");
-}
 
 tessera::PcfOptions pcf_options(double r_max, double bandwidth, int bins) {
     tessera::PcfOptions o;
@@ -33,13 +27,7 @@ tessera::PcfOptions pcf_options(double r_max, double bandwidth, int bins) {
 template <class Data>
 void save_data(const Data& data, const std::string& path, const std::string& gltf_instancing) {
     tessera::SaveOptions options;
-    if (gltf_instancing == "gpu")
-        options.gltf_instancing = tessera::GltfInstancing::gpu;
-    else if (gltf_instancing == "nodes")
-        options.gltf_instancing = tessera::GltfInstancing::nodes;
-    else
-        throw tessera::Error(tessera::ErrorKind::option,
-                             "gltf_instancing must be 'gpu' or 'nodes', got '" + gltf_instancing + "'");
+    options.gltf_instancing = tessera::parse_gltf_instancing(gltf_instancing, "gltf_instancing");
     py::gil_scoped_release release;
     tessera::save(data, path, options);
 }
@@ -64,7 +52,7 @@ void bind_io(py::module_& m) {
         [](const tessera::Exemplar& data, const std::string& path, int width, const std::string& meshes) {
             tessera::RenderOptions options;
             options.width = width;
-            options.meshes = meshes_option(meshes);
+            options.meshes = tessera::parse_render_meshes(meshes, "meshes");
             py::gil_scoped_release release;
             tessera::render_to_file(data, path, options);
         },

@@ -216,6 +216,19 @@ Matching parse_matching(const std::string& text, const std::string& parameter) {
     bad(parameter + " must be greedy or hungarian, got '" + text + "'");
 }
 
+RenderOptions::Meshes parse_render_meshes(const std::string& text, const std::string& parameter) {
+    if (text == "auto") return RenderOptions::Meshes::automatic;
+    if (text == "on") return RenderOptions::Meshes::on;
+    if (text == "off") return RenderOptions::Meshes::off;
+    bad(parameter + " must be auto, on or off, got '" + text + "'");
+}
+
+GltfInstancing parse_gltf_instancing(const std::string& text, const std::string& parameter) {
+    if (text == "gpu") return GltfInstancing::gpu;
+    if (text == "nodes") return GltfInstancing::nodes;
+    bad(parameter + " must be gpu or nodes, got '" + text + "'");
+}
+
 const char* to_string(SearchMode mode) { return mode == SearchMode::kcoherence ? "kcoherence" : "exhaustive"; }
 const char* to_string(Matching matching) { return matching == Matching::greedy ? "greedy" : "hungarian"; }
 
