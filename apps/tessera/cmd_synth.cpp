@@ -32,6 +32,19 @@ extern "C" void on_interrupt(int) {
     std::signal(SIGINT, SIG_DFL);
 }
 
+// Catches SIGINT from the start of the command (loading an input or voxelizing a mesh
+// domain can take a while) until the synthesis returns; the first progress call after an
+// interrupt then cancels the run. Restores the default on every way out.
+struct InterruptScope {
+    InterruptScope() {
+        interrupted = 0;
+        std::signal(SIGINT, on_interrupt);
+    }
+    ~InterruptScope() { std::signal(SIGINT, SIG_DFL); }
+    InterruptScope(const InterruptScope&) = delete;
+    InterruptScope& operator=(const InterruptScope&) = delete;
+};
+
 struct SynthArgs {
     std::string input, output, preview, input_domain, domain, field, gravity, boundary, meshes = "auto";
     std::string gltf_instancing = "gpu";
@@ -123,6 +136,7 @@ tessera::Progress make_progress(bool quiet, const char* unit) {
 }
 
 void run_synth(SynthArgs& args) {
+    std::optional<InterruptScope> interrupt_scope(std::in_place);
     check_options(args);
     if (args.domain_option->count() > 0) tessera::check_domain_spec(args.domain, "--domain");
     check_arrangement_output(args.output, "-o");
@@ -160,8 +174,6 @@ void run_synth(SynthArgs& args) {
                       << std::endl;
     }
 
-    interrupted = 0;
-    std::signal(SIGINT, on_interrupt);
     tessera::Arrangement result;
     try {
         if (pcf)
@@ -169,10 +181,9 @@ void run_synth(SynthArgs& args) {
         else
             result = tessera::synthesize_det(exemplar, domain, args.det, make_progress(args.quiet, "iteration"));
     } catch (const tessera::Cancelled&) {
-        std::signal(SIGINT, SIG_DFL);
         throw tessera::Error(tessera::ErrorKind::cancelled, "interrupted; nothing was written");
     }
-    std::signal(SIGINT, SIG_DFL);
+    interrupt_scope.reset();  // from here Ctrl-C stops the command the usual way (writes are atomic)
 
     // The preview goes first: when OUTPUT exists, the whole command succeeded.
     if (!args.preview.empty()) tessera::render_to_file(result, args.preview, preview_options);

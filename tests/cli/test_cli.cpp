@@ -349,7 +349,8 @@ TEST_F(CliSynth, DeterministicAcrossThreads) {
 
 // Ctrl-C stops the run at the next iteration boundary: exit 130, nothing written.
 TEST_F(CliSynth, InterruptWritesNothing) {
-    const std::string command = "timeout --preserve-status -s INT 0.5 '" + std::string(TESSERA_CLI) +
+    // 1 s: well past the start-up of a sanitizer build, well before the run's end.
+    const std::string command = "timeout --preserve-status -s INT 1 '" + std::string(TESSERA_CLI) +
                                 "' synth " + q(example("spheres_3d.json")) + " -o " + q(path("out.json")) +
                                 " --scale 1.25 --iterations 100000 --quiet 2>" +
                                 q((root_ / "capture" / "err").string());
