@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <time.h>
+
 #include "common.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -24,12 +26,30 @@ namespace tessera_cli {
 namespace {
 
 // Set by SIGINT; the progress callback then asks the library to stop at the next
-// iteration boundary (a second Ctrl-C kills the process the usual way).
+// iteration boundary. A second Ctrl-C kills the process the usual way, but only when it
+// comes at least 0.2 s after the first: `timeout -s INT` and scripts that signal both a
+// child and its process group deliver one interrupt twice within microseconds, and that
+// must still end cleanly. (clock_gettime is async-signal-safe; std::chrono is not
+// guaranteed to be.)
 volatile std::sig_atomic_t interrupted = 0;
+volatile std::sig_atomic_t first_interrupt_ms = 0;
+
+long monotonic_ms() {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return static_cast<long>(now.tv_sec % 1000000) * 1000 + now.tv_nsec / 1000000;
+}
 
 extern "C" void on_interrupt(int) {
-    interrupted = 1;
+    const long now = monotonic_ms();
+    if (interrupted == 0) {
+        interrupted = 1;
+        first_interrupt_ms = static_cast<std::sig_atomic_t>(now);
+        return;
+    }
+    if (now - first_interrupt_ms < 200) return;  // the same interrupt delivered twice
     std::signal(SIGINT, SIG_DFL);
+    std::raise(SIGINT);
 }
 
 // Catches SIGINT from the start of the command (loading an input or voxelizing a mesh
