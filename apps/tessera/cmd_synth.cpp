@@ -306,8 +306,10 @@ Subcommand add_synth_command(CLI::App& app) {
                     "(mean nearest-neighbour distance squared).")
         ->capture_default_str();
     cmd->add_option("--patch-size", args->det.patch_size,
-                    "Side of the patches copied at initialization; 0 = automatic (min(2 x radius, half the "
-                    "exemplar's smallest extent)).")
+                    "Side of the patches copied at initialization; 0 = automatic: 2 x radius, or twice the "
+                    "distance over which the exemplar's pair correlation shows structure when that is "
+                    "larger (clusters, lattices; not with --field), at most half the exemplar's smallest "
+                    "extent (docs/det.md).")
         ->capture_default_str();
     cmd->add_option("--patch-candidates", args->det.patch_candidates,
                     "Random candidate patches tried per cell at initialization (>= 1).")

@@ -55,6 +55,9 @@ Scene save_scene(const Exemplar& data, const std::string& path, const SaveOption
 Exemplar parse_json(const std::string& text, const std::string& source);
 Exemplar parse_csv(const std::string& text, const std::string& source, const LoadOptions& options = {});
 std::string to_json(const Exemplar& data, const RunStats* stats = nullptr);
+// The deterministic part of the run statistics as one line of JSON: the "stats" object of
+// an output .json file (docs/format.md). Timings and the thread count are not in it.
+std::string run_stats_json(const RunStats& stats);
 // A JSON file holding just a "domain" object (docs/format.md), as `--domain polygon:FILE.json`
 // takes; "type" may be omitted for a polygon ({"outer": [...], "holes": [...]}).
 // Files it names are relative to `path`'s directory.

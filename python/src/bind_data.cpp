@@ -14,6 +14,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "tessera/exemplar.hpp"
+#include "tessera/io.hpp"
 
 namespace py = pybind11;
 
@@ -392,29 +393,14 @@ void data_properties(Class& c) {
         .def("copy", [](const typename Class::type& e) { return e; });
 }
 
+// The "stats" object of an output .json file (one list of fields, kept by the library's
+// writer), plus the timings and thread count a file leaves out for byte-identical output.
 py::dict stats_of(const tessera::RunStats& s) {
-    py::dict d;
-    d["method"] = s.method;
-    d["energy"] = s.energy;
-    d["final_energy"] = s.final_energy;
-    d["radius"] = s.radius;
-    d["solver_bound_hits"] = s.solver_bound_hits;
-    d["fallbacks"] = s.fallbacks;
-    d["notes"] = s.notes;
-    d["physics"] = s.physics;
-    if (s.physics) {
-        d["penetrations_before"] = s.penetrations_before;
-        d["penetrations_after"] = s.penetrations_after;
-        d["max_depth_before"] = s.max_depth_before;
-        d["max_depth_after"] = s.max_depth_after;
-        d["floating_before"] = s.floating_before;
-        d["floating_after"] = s.floating_after;
-    }
+    py::dict d = py::module_::import("json").attr("loads")(tessera::run_stats_json(s));
     d["iteration_seconds"] = s.iteration_seconds;
     d["init_seconds"] = s.init_seconds;
     d["total_seconds"] = s.total_seconds;
     d["threads"] = s.threads;
-    d["seed"] = s.seed;
     return d;
 }
 
@@ -432,7 +418,9 @@ void bind_data(py::module_& m) {
     py::class_<tessera::Arrangement, tessera::Exemplar> arrangement(
         m, "Arrangement", "The output of a synthesis: an Exemplar plus the statistics of the run.");
     arrangement.def_property_readonly("stats", [](const tessera::Arrangement& a) { return stats_of(a.stats); },
-                                      "Statistics of the run as a dict (method, energy per iteration, notes, ...).");
+                                      "Statistics of the run as a dict: the \"stats\" object of a saved .json (method, energy "
+                                      "per iteration, notes, fallbacks, ...) plus iteration_seconds, init_seconds, "
+                                      "total_seconds and threads.");
     arrangement.def("copy", [](const tessera::Arrangement& a) { return a; });
     arrangement.def("__repr__", [](const tessera::Arrangement& e) {
         return "<tessera.Arrangement " + std::to_string(e.dimension) + "D, " + std::to_string(e.elements.size()) +

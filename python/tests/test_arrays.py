@@ -1,4 +1,6 @@
 """Exemplars from numpy arrays, and the round trip arrays -> synthesize -> save -> load."""
+import json
+
 import numpy as np
 import pytest
 
@@ -37,8 +39,12 @@ def test_round_trip_synthesize_save_load(two_class, tmp_path):
     tessera.save(out, path)
     back = tessera.load(path)
     assert_same_arrays(out, back)
-    # The run statistics travel in the JSON too.
+    # The run statistics are the saved file's "stats" plus the timings a file leaves out.
     assert out.stats["method"] == "det" and len(out.stats["energy"]) == 4
+    saved = json.loads(path.read_text())["stats"]
+    timings = {"iteration_seconds", "init_seconds", "total_seconds", "threads"}
+    assert {k: v for k, v in out.stats.items() if k not in timings} == saved
+    assert timings <= out.stats.keys() and len(out.stats["iteration_seconds"]) == 4
 
 
 def test_multi_sample_elements_with_attributes_and_times(tmp_path):

@@ -16,6 +16,7 @@ struct InitResult {
     std::vector<int> source_sample;    // per output sample: the input sample it was copied from
     std::vector<int> source_element;   // per output element: the input element it was copied from
     double patch_size = 0.0;
+    double structure_range = 0.0;      // the exemplar's correlation range, when the default patch used it
     int filled = 0;                    // elements added by fill_holes
 };
 

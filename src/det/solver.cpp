@@ -2,6 +2,7 @@
 // then iterate search and assignment, reporting the energy of Eq. 2 each time.
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "core/parallel.hpp"
 #include "core/run_clock.hpp"
@@ -50,6 +51,14 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     stats.threads = threads;
     stats.seed = options.seed;
     stats.init_seconds = seconds_since(t0);
+    if (init.structure_range > params.radius) {
+        char note[200];
+        std::snprintf(note, sizeof note,
+                      "initialization patches of %.4g: the exemplar is structured up to %.4g, beyond the "
+                      "neighbourhood radius %.4g (docs/det.md)",
+                      init.patch_size, init.structure_range, params.radius);
+        stats.notes.push_back(note);
+    }
 
     const det::SearchSettings search{options.search, threads};
     PhysicsOptions physics = options.physics_options;

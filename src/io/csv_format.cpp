@@ -271,7 +271,9 @@ private:
             if (!value)
                 fail_input(source_, line,
                            names_[f] + " is not a number: '" + fields[f] +
-                               "' (columns other than the known ones are numeric attributes)");
+                               "' (columns other than the known ones are numeric attributes" +
+                               (has(Column::cls) ? std::string(")")
+                                                 : "; name it 'class' if it holds class names)"));
             if (!std::isfinite(*value)) fail_input(source_, line, names_[f] + " is NaN or infinite");
             row.attributes.push_back(*value);
         }

@@ -561,6 +561,8 @@ Domain load_domain_json(const std::string& path, int dimension) {
     return JsonReader(path).read_domain_document(read_file(path), dimension);
 }
 
+std::string run_stats_json(const RunStats& stats) { return stats_json(stats).dump(); }
+
 std::string to_json(const Exemplar& data, const RunStats* stats) {
     return to_json_with_mesh_paths(data, stats, [](const std::string& mesh) { return mesh; });
 }

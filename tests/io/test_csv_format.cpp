@@ -241,6 +241,9 @@ TEST(IoCsv, RejectsNonNumbers) {
     expect_csv_error("x,y\n1,2\n3,4abc\n", ErrorKind::input, "data/pts.csv:3: y is not a number: '4abc'");
     expect_csv_error("x,y\n1,\n", ErrorKind::input, "data/pts.csv:2: y is not a number: ''");
     expect_csv_error("x,y,hue\n1,2,red\n", ErrorKind::input, "data/pts.csv:2: hue is not a number: 'red'");
+    // Without a class column, a text column is most likely class names under another name
+    // (spatstat's "marks", a field sheet's "species"): the message says how to read it so.
+    expect_csv_error("x,y,marks\n1,2,on\n", ErrorKind::input, "name it 'class' if it holds class names");
     expect_csv_error("x,y,id\n1,2,-1\n", ErrorKind::input,
                      "data/pts.csv:2: id is not a non-negative integer");
     expect_csv_error("x,y,z\n1,2,1e400\n", ErrorKind::input, "data/pts.csv:2: z is not a number");
