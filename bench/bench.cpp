@@ -6,6 +6,7 @@
 //             elements, interleaved physics on, 10 iterations
 //   B3-spaghetti  deformable 24-sample noodles filling a plate mesh, 10 iterations
 //   B4-*      the PCF method (pcf_scenarios.cpp): examples/pcf/ and shared real datasets
+//   B5        both methods on every shared real dataset (field_data_scenarios.cpp)
 // Usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]
 // Prints a Markdown table (median of repeated runs for the small scenarios).
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "field_data_scenarios.hpp"
 #include "pcf_scenarios.hpp"
 #include "tessera/tessera.hpp"
 
@@ -36,12 +38,19 @@ double seconds(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Runs every scenario and prints their tables (defined after main).
+void run(const std::string& dir, bool quick, int threads, const std::string& shared);
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T]\n");
-        return 2;
+    const char* usage =
+        "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]\n"
+        "Runs benchmarks B1-B5 (docs/benchmarks.md) and prints Markdown tables; --quick skips B1-large,\n"
+        "--shared names the shared data directory (default EXAMPLES_DIR/../../shared/data).\n";
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+        std::fprintf(argc < 2 ? stderr : stdout, "%s", usage);
+        return argc < 2 ? 2 : 0;
     }
     const std::string dir = argv[1];
     bool quick = false;
@@ -52,7 +61,23 @@ int main(int argc, char** argv) {
         if (a == "--quick") quick = true;
         else if (a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
         else if (a == "--shared" && i + 1 < argc) shared = argv[++i];
+        else {
+            std::fprintf(stderr, "tessera_bench: unknown argument '%s'\n%s", a.c_str(), usage);
+            return 2;
+        }
     }
+    try {
+        run(dir, quick, threads, shared);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "tessera_bench: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
+namespace {
+
+void run(const std::string& dir, bool quick, int threads, const std::string& shared) {
     std::vector<Scenario> scenarios = {
         {"B1", "poisson_disk_2d.json", 1000, 5, false},
         {"B1-large", "poisson_disk_2d.json", 100000, 1, false},
@@ -95,5 +120,7 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
     }
     tessera_bench::run_pcf_scenarios(dir, shared, threads);
-    return 0;
+    tessera_bench::run_field_data_scenarios(shared, threads);
 }
+
+}  // namespace

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pcf_scenarios.hpp"
+#include "shared_data.hpp"
 #include "tessera/tessera.hpp"
 
 namespace tessera_bench {
@@ -22,22 +23,6 @@ struct PcfScenario {
     std::string name, path;
     std::string window;  // CSV data: the observation window "xmin,ymin,xmax,ymax"
 };
-
-// The window of a shared dataset, from points/windows.csv (name,xmin,ymin,xmax,ymax,...).
-std::string window_of(const std::string& shared, const std::string& name) {
-    std::ifstream in(shared + "/points/windows.csv");
-    std::string line;
-    while (std::getline(in, line)) {
-        std::stringstream s(line);
-        std::string field;
-        std::getline(s, field, ',');
-        if (field != name) continue;
-        std::string box, v;
-        for (int k = 0; k < 4 && std::getline(s, v, ','); ++k) box += (k ? "," : "") + v;
-        return box;
-    }
-    return "";
-}
 
 }  // namespace
 

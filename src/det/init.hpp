@@ -18,6 +18,7 @@ struct InitResult {
     double patch_size = 0.0;
     double structure_range = 0.0;      // the exemplar's correlation range, when the default patch used it
     int filled = 0;                    // elements added by fill_holes
+    int thinned = 0;                   // elements removed by thin_crowds
 };
 
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
@@ -33,5 +34,11 @@ int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Qu
 // Returns how many were added.
 int fill_holes(InitResult& init, const Exemplar& exemplar, const Domain& domain, const Params& params,
                std::uint64_t seed);
+
+// Removes the most crowded elements (nearest neighbour closest relative to the exemplar's
+// typical distance for that pair of types) of every type that holds more than its
+// exemplar density asks for, until the counts are met (src/det/thin_crowds.cpp).
+// Returns how many were removed; renumbers ids 0..n-1.
+int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain, const Params& params);
 
 }  // namespace tessera::det

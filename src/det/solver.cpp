@@ -38,6 +38,7 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     const det::InputIndex index = det::build_input_index(
         exemplar, params, options.search == SearchMode::kcoherence ? options.k : 0, threads);
     det::InitResult init = det::initialize_patches(exemplar, index, domain, params, options);
+    init.thinned = det::thin_crowds(init, exemplar, domain, params);
     init.filled = det::fill_holes(init, exemplar, domain, params, options.seed);
 
     det::OutputState state;
