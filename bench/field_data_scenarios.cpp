@@ -19,14 +19,6 @@ namespace {
 
 using namespace tessera;
 
-double pcf_error(const Exemplar& exemplar, const Exemplar& output) {
-    const PcfResult reference = pair_correlation(exemplar);
-    PcfOptions grid;
-    grid.r_max = reference.r.back();
-    grid.bandwidth = reference.bandwidth;
-    return pcf_relative_error(reference, pair_correlation(output, grid));
-}
-
 // The exemplar's elements at `copies` per axis translates of its window (2D box).
 Exemplar tiled(const Exemplar& ex, int copies) {
     Exemplar out;
@@ -82,7 +74,7 @@ void run_field_data_scenarios(const std::string& shared, int threads) {
             auto t0 = std::chrono::steady_clock::now();
             const Arrangement det_out = synthesize_det(ex, domain, d);
             det_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            det_error += pcf_error(ex, det_out);
+            det_error += pcf_relative_error(ex, det_out);
             output_count = det_out.elements.size();
             PcfSynthOptions p;
             p.seed = seed;
@@ -90,12 +82,12 @@ void run_field_data_scenarios(const std::string& shared, int threads) {
             t0 = std::chrono::steady_clock::now();
             const Arrangement pcf_out = synthesize_pcf(ex, domain, p);
             pcf_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            pcf_error_sum += pcf_error(ex, pcf_out);
+            pcf_error_sum += pcf_relative_error(ex, pcf_out);
         }
         const double n = static_cast<double>(seeds.size());
         std::printf("| %s | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", name.c_str(), ex.types.size(),
                     ex.elements.size(), output_count, det_error / n, pcf_error_sum / n,
-                    pcf_error(ex, uniform_like(tiled(ex, 2), 1)), pcf_error(ex, tiled(ex, 2)), det_seconds / n,
+                    pcf_relative_error(ex, uniform_like(tiled(ex, 2), 1)), pcf_relative_error(ex, tiled(ex, 2)), det_seconds / n,
                     pcf_seconds / n);
         std::fflush(stdout);
     }

@@ -41,6 +41,14 @@ PcfResult pair_correlation(const Exemplar& points, const PcfOptions& options = {
 // over r >= 3 x bandwidth: sqrt(sum (g_a - g_b)^2 / sum g_a^2), pooled over pairs.
 double pcf_relative_error(const PcfResult& reference, const PcfResult& other);
 
+// The PCF of `points` on the r values and bandwidth of `grid` (another PCF), so the two
+// can be compared.
+PcfResult pair_correlation_on_grid_of(const Exemplar& points, const PcfResult& grid);
+
+// What `tessera metrics` reports as pcf_relative_error: the output's PCF against the
+// exemplar's (`options` set the exemplar's grid; the output uses the same one).
+double pcf_relative_error(const Exemplar& exemplar, const Exemplar& output, const PcfOptions& options = {});
+
 struct NearestNeighborStats {
     double mean = 0.0, stddev = 0.0, min = 0.0, max = 0.0;
     std::vector<double> distances;   // per element, element order

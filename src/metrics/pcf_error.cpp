@@ -64,4 +64,17 @@ double pcf_relative_error(const PcfResult& reference, const PcfResult& other) {
     return diff2 > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
+PcfResult pair_correlation_on_grid_of(const Exemplar& points, const PcfResult& grid) {
+    PcfOptions same;
+    same.r_max = grid.r.empty() ? 0.0 : grid.r.back();
+    same.bandwidth = grid.bandwidth;
+    same.bins = static_cast<int>(grid.r.size());
+    return pair_correlation(points, same);
+}
+
+double pcf_relative_error(const Exemplar& exemplar, const Exemplar& output, const PcfOptions& options) {
+    const PcfResult reference = pair_correlation(exemplar, options);
+    return pcf_relative_error(reference, pair_correlation_on_grid_of(output, reference));
+}
+
 }  // namespace tessera

@@ -70,11 +70,7 @@ std::string metrics_report_json(const Exemplar& exemplar, const Exemplar& output
         throw Error(ErrorKind::input, "metrics: the exemplar is " + std::to_string(exemplar.dimension) +
                                           "D but the output is " + std::to_string(output.dimension) + "D");
     const PcfResult pcf_exemplar = pair_correlation(exemplar, options);
-    PcfOptions same_grid;
-    same_grid.r_max = pcf_exemplar.r.back();
-    same_grid.bandwidth = pcf_exemplar.bandwidth;
-    same_grid.bins = static_cast<int>(pcf_exemplar.r.size());
-    const PcfResult pcf_output = pair_correlation(output, same_grid);
+    const PcfResult pcf_output = pair_correlation_on_grid_of(output, pcf_exemplar);
 
     const Summary ex = summarize(exemplar, pcf_exemplar);
     const Summary out = summarize(output, pcf_output);

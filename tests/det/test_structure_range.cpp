@@ -57,15 +57,6 @@ Exemplar thomas_points(int parents, int children, double sigma, std::uint64_t se
 
 double spacing_of(const Exemplar& ex) { return nearest_neighbor_distances(ex).mean; }
 
-// PCF error of `out` against `ex` on the exemplar's default r grid.
-double pcf_error(const Exemplar& ex, const Exemplar& out) {
-    const PcfResult reference = pair_correlation(ex);
-    PcfOptions grid;
-    grid.r_max = reference.r.back();
-    grid.bandwidth = reference.bandwidth;
-    return pcf_relative_error(reference, pair_correlation(out, grid));
-}
-
 }  // namespace
 
 TEST(StructureRange, RandomPointsHaveNoneBeyondANeighbourhood) {
@@ -124,7 +115,7 @@ TEST(DetSynthesis, ClusteredFieldDataKeepTheirClustersAtFourTimesTheArea) {
         const Arrangement out = synthesize_det(ex, ex.domain.scaled(2.0), o);
         ASSERT_FALSE(out.stats.notes.empty());
         EXPECT_NE(out.stats.notes[0].find("initialization patches of"), std::string::npos);
-        total += pcf_error(ex, out);
+        total += pcf_relative_error(ex, out);
     }
     EXPECT_LT(total / 2.0, 0.19);
 }

@@ -49,6 +49,21 @@ TEST(MetricsReport, IdenticalOutputHasZeroDifferences) {
     EXPECT_DOUBLE_EQ(j["exemplar"]["pcf"]["bandwidth"].get<double>(), 0.01);
 }
 
+TEST(MetricsReport, ExemplarLevelErrorIsTheReportedOne) {
+    // pcf_relative_error(exemplar, output): the report's number, on the exemplar's grid.
+    const Exemplar ex = test::load_field_pattern("ganglia");
+    Exemplar out = ex;
+    for (auto& e : out.elements) e.position = e.position * 0.97;
+    const PcfOptions options{.r_max = 0.2, .bandwidth = 0.008};
+    const auto j = nlohmann::json::parse(metrics_report_json(ex, out, options));
+    const double error = pcf_relative_error(ex, out, options);
+    EXPECT_GT(error, 0.01);
+    EXPECT_DOUBLE_EQ(error, j.at("pcf_relative_error").get<double>());
+    const PcfResult grid = pair_correlation(ex, options);
+    EXPECT_EQ(pair_correlation_on_grid_of(out, grid).r, grid.r);
+    EXPECT_DOUBLE_EQ(pair_correlation_on_grid_of(out, grid).bandwidth, 0.008);
+}
+
 TEST(MetricsReport, ThreeDimensionalHasNoPsi6) {
     Exemplar ex;
     ex.dimension = 3;
