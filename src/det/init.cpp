@@ -246,12 +246,18 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
     // outputs up to 30% overfull (redwood at 4x). Each candidate therefore also pays for
     // how far the running count would stray from the exemplar's density over the cells
     // done so far, beyond one cell's worth, at the price of a missing element (cap2) per
-    // element. Not for layered exemplars, whose cells are not patch-sized along thin axes.
+    // element, class by class (each class against its own share of the density, so the
+    // classes keep their proportions too). Not for layered exemplars, whose cells are not
+    // patch-sized along thin axes.
     const bool balance_count = !layer.any;
     const double density = static_cast<double>(exemplar.elements.size()) / exemplar.domain.measure();
+    std::vector<double> share(n_types, 0.0);
+    for (const Element& e : exemplar.elements) share[e.type] += 1.0 / static_cast<double>(n_in);
+    std::vector<int> placed_of_type(n_types, 0), window_counts(n_types, 0);
     double expected_so_far = 0.0;
+    // Fills window_counts: the elements of each type the window would put in the cell.
     auto window_count_in_cell = [&](const PatchMap& m, const Vec3& clo) {
-        int count = 0;
+        std::fill(window_counts.begin(), window_counts.end(), 0);
         in_grid.for_each_within(m.in_center, window_reach + 1e-12, [&](int i, double) {
             bool in_window = true;
             for (int k = 0; k < dim; ++k)
@@ -260,9 +266,8 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
             const Vec3 q = m.to_output(in_centers[i]);
             bool in_cell = true;
             for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
-            if (in_cell && domain.inside(q)) ++count;
+            if (in_cell && domain.inside(q)) ++window_counts[exemplar.elements[i].type];
         });
-        return count;
     };
 
     for (int c = 0; c < cells.count(); ++c) {
@@ -369,9 +374,12 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
             for (const Vec3& q : probes)
                 if (domain.inside(q) != exemplar.domain.inside(map.to_input(q))) score += cap2;
             if (balance_count) {
-                const double straying = static_cast<double>(out.elements.size() + window_count_in_cell(map, clo)) -
-                                        (expected_so_far + expected_cell);
-                score += cap2 * std::max(0.0, std::abs(straying) - std::max(1.0, expected_cell));
+                window_count_in_cell(map, clo);
+                for (int t = 0; t < n_types; ++t) {
+                    const double straying = static_cast<double>(placed_of_type[t] + window_counts[t]) -
+                                            share[t] * (expected_so_far + expected_cell);
+                    score += cap2 * std::max(0.0, std::abs(straying) - std::max(1.0, share[t] * expected_cell));
+                }
             }
             if (score < best_score) best_score = score, best_center = map.in_center;
         }
@@ -405,6 +413,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
                                               map.out_center - map.rotation.rotate(map.in_center), dim);
             const int cell = cells.index_of(out.elements.back().position, dim);
             placed[cell >= 0 ? cell : c].push_back(index_out);
+            ++placed_of_type[src.type];
         }
         expected_so_far += expected_cell;
     }

@@ -108,6 +108,9 @@ struct OutputState {
     std::vector<int> source_element;    // input element each output element copies attributes from
     std::vector<Quat> frame;            // per output sample: local frame of the field at it (Eq. 7)
     std::vector<char> floor;            // per output sample: of a floor element (constrained selection)
+    // Per type: the element count the attribute vote must keep (the initialization's, which
+    // holds the exemplar's density); empty = unconstrained.
+    std::vector<int> type_target;
 };
 
 }  // namespace tessera::det

@@ -46,6 +46,8 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     state.key = det::sample_keys(state.arrangement);
     state.match = std::move(init.source_sample);
     state.source_element = std::move(init.source_element);
+    state.type_target.assign(state.arrangement.types.size(), 0);
+    for (const Element& e : state.arrangement.elements) ++state.type_target[e.type];
 
     RunStats& stats = state.arrangement.stats;
     stats.method = "det";

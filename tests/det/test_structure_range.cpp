@@ -124,8 +124,8 @@ TEST(DetSynthesis, FieldDataKeepTheirDensityPerClassAtFourTimesTheArea) {
     // The patch copy used to overfill: amacrine +4.5%, cells +10%, swedishpines +9% from
     // seam pairs (now thinned out, det/thin_crowds.cpp), and clustered redwood up to +31%
     // (seed 4) from windows of very different counts (now balanced over the raster order,
-    // det/init.cpp). Classes can still differ by ~3% (amacrine: windows richer in one
-    // class, without crowding; the hole filling draws classes in the exemplar's proportions).
+    // det/init.cpp, class by class). The attribute vote (Eq. 5) used to drift the classes
+    // apart over the iterations (amacrine +3.1% / -3.3%); it now exchanges types instead.
     for (const auto& [name, window] : std::vector<std::pair<std::string, std::string>>{
              {"amacrine", "0,0,1.60121,1"}, {"cells", "0,0,1,1"}, {"redwood", "0,-1,1,0"},
              {"ganglia", "0,0,1,0.7533"}, {"swedishpines", "0,0,96,100"}, {"anemones", "0,0,280,180"}}) {
@@ -143,7 +143,7 @@ TEST(DetSynthesis, FieldDataKeepTheirDensityPerClassAtFourTimesTheArea) {
                     return static_cast<double>(std::count_if(data.elements.begin(), data.elements.end(),
                                                              [t](const Element& e) { return e.type == t; }));
                 };
-                EXPECT_NEAR(of_type(out) / (4.0 * of_type(ex)), 1.0, 0.035)
+                EXPECT_NEAR(of_type(out) / (4.0 * of_type(ex)), 1.0, 0.02)
                     << name << " seed " << seed << " class " << ex.types[t].name;
             }
         }
