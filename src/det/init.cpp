@@ -255,9 +255,10 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
     for (const Element& e : exemplar.elements) share[e.type] += 1.0 / static_cast<double>(n_in);
     std::vector<int> placed_of_type(n_types, 0), window_counts(n_types, 0);
     double expected_so_far = 0.0;
-    // Fills window_counts: the elements of each type the window would put in the cell.
-    auto window_count_in_cell = [&](const PatchMap& m, const Vec3& clo) {
-        std::fill(window_counts.begin(), window_counts.end(), 0);
+    // The exemplar elements (ascending) whose centroids lie in the window (a box, not the
+    // ball around it) and land in the cell and the domain: what a window puts in a cell.
+    auto window_elements_in_cell = [&](const PatchMap& m, const Vec3& clo, std::vector<int>& elements) {
+        elements.clear();
         in_grid.for_each_within(m.in_center, window_reach + 1e-12, [&](int i, double) {
             bool in_window = true;
             for (int k = 0; k < dim; ++k)
@@ -266,8 +267,9 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
             const Vec3 q = m.to_output(in_centers[i]);
             bool in_cell = true;
             for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
-            if (in_cell && domain.inside(q)) ++window_counts[exemplar.elements[i].type];
+            if (in_cell && domain.inside(q)) elements.push_back(i);
         });
+        std::sort(elements.begin(), elements.end());
     };
 
     for (int c = 0; c < cells.count(); ++c) {
@@ -374,7 +376,9 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
             for (const Vec3& q : probes)
                 if (domain.inside(q) != exemplar.domain.inside(map.to_input(q))) score += cap2;
             if (balance_count) {
-                window_count_in_cell(map, clo);
+                window_elements_in_cell(map, clo, window);
+                std::fill(window_counts.begin(), window_counts.end(), 0);
+                for (int i : window) ++window_counts[exemplar.elements[i].type];
                 for (int t = 0; t < n_types; ++t) {
                     const double straying = static_cast<double>(placed_of_type[t] + window_counts[t]) -
                                             share[t] * (expected_so_far + expected_cell);
@@ -386,20 +390,9 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
 
         // Copy whole elements whose centroid lies in the chosen window (and in the domain).
         map.in_center = best_center;
-        window.clear();
-        in_grid.for_each_within(map.in_center, window_reach + 1e-12, [&](int i, double) {
-            // Only the window itself (a box), not the whole ball around it.
-            bool in_window = true;
-            for (int k = 0; k < dim; ++k)
-                in_window = in_window && std::abs(in_centers[i][k] - map.in_center[k]) <= window_half[k] + 1e-12;
-            if (in_window) window.push_back(i);
-        });
-        std::sort(window.begin(), window.end());
+        window_elements_in_cell(map, clo, window);
         for (int i : window) {
             const Vec3 q = map.to_output(in_centers[i]);
-            bool in_cell = true;
-            for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
-            if (!in_cell || !domain.inside(q)) continue;
             const Element& src = exemplar.elements[i];
             bool duplicate = false;
             for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
