@@ -126,6 +126,17 @@ struct PatchMap {
 
 }  // namespace
 
+std::vector<Vec3> element_centroids(const std::vector<Element>& elements, int dimension) {
+    std::vector<Vec3> p;
+    p.reserve(elements.size());
+    for (const Element& e : elements) {
+        Vec3 q = e.position;
+        if (dimension == 2) q.z = 0.0;
+        p.push_back(q);
+    }
+    return p;
+}
+
 int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,
                 int dimension) {
     Arrangement& out = init.arrangement;
@@ -203,11 +214,7 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
 
     // Input elements by centroid for window queries.
     const int n_in = static_cast<int>(exemplar.elements.size());
-    std::vector<Vec3> in_centers(n_in);
-    for (int e = 0; e < n_in; ++e) {
-        in_centers[e] = exemplar.elements[e].position;
-        if (dim == 2) in_centers[e].z = 0.0;
-    }
+    const std::vector<Vec3> in_centers = element_centroids(exemplar.elements, dim);
     core::SpatialGrid in_grid;
     in_grid.build(in_centers, std::max(params.spacing, patch / 4.0), dim);
 

@@ -24,6 +24,9 @@ struct InitResult {
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
                               const Params& params, const DetOptions& options);
 
+// Element positions (centroids), z = 0 in 2D: the points of the grids over elements.
+std::vector<Vec3> element_centroids(const std::vector<Element>& elements, int dimension);
+
 // Appends a copy of exemplar element `source` moved by p -> rotation p + shift
 // (recording its source samples and element); returns the new element's index.
 int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,

@@ -25,24 +25,13 @@ namespace {
 constexpr double reach_in_spacings = 3.0;  // neighbours farther than this never crowd
 constexpr double close_quantile = 0.1;
 
-std::vector<Vec3> centroids(const std::vector<Element>& elements, int dimension) {
-    std::vector<Vec3> p;
-    p.reserve(elements.size());
-    for (const Element& e : elements) {
-        Vec3 q = e.position;
-        if (dimension == 2) q.z = 0.0;
-        p.push_back(q);
-    }
-    return p;
-}
-
 // A low quantile (close_quantile) of the distances from elements of type a to their
 // nearest element of type b (within the reach), per ordered pair (a, b) as
 // [a * types + b]: closer than this, a pair is rarer in the exemplar than one in ten.
 // Infinity where the exemplar never shows b that close to a.
 std::vector<double> close_distance(const Exemplar& exemplar, int dimension, double reach) {
     const int types = static_cast<int>(exemplar.types.size());
-    const std::vector<Vec3> p = centroids(exemplar.elements, dimension);
+    const std::vector<Vec3> p = element_centroids(exemplar.elements, dimension);
     core::SpatialGrid grid;
     grid.build(p, reach / 2.0, dimension);
     std::vector<std::vector<double>> distances(static_cast<size_t>(types) * types);
@@ -116,7 +105,7 @@ int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain
 
     const double reach = reach_in_spacings * params.spacing;
     const std::vector<double> close = close_distance(exemplar, dim, reach);
-    const std::vector<Vec3> p = centroids(out.elements, dim);
+    const std::vector<Vec3> p = element_centroids(out.elements, dim);
     core::SpatialGrid grid;
     grid.build(p, reach / 2.0, dim);
     std::vector<char> keep(out.elements.size(), 1);
