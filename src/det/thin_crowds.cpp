@@ -120,8 +120,8 @@ int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain
         return score;
     };
 
-    // (crowding, -index): most crowded first; of a crowded pair the later copy (a seam
-    // newcomer, or a hole filler) goes.
+    // (crowding, -index): most crowded first; of a crowded pair the later copy (the seam
+    // newcomer) goes. Runs before fill_holes, so every element here is a patch copy.
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
     for (size_t i = 0; i < out.elements.size(); ++i) {
