@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
     const char* usage =
         "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]\n"
         "Runs benchmarks B1-B5 (docs/benchmarks.md) and prints Markdown tables; --quick skips B1-large,\n"
-        "--shared names the shared data directory (default EXAMPLES_DIR/../../shared/data).\n";
+        "--shared names the real point patterns' directory (default EXAMPLES_DIR/../tests/data/spatstat).\n";
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::fprintf(argc < 2 ? stderr : stdout, "%s", usage);
         return argc < 2 ? 2 : 0;
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
     const std::string dir = argv[1];
     bool quick = false;
     int threads = 0;
-    std::string shared = dir + "/../../shared/data";
+    std::string shared = dir + "/../tests/data/spatstat";
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--quick") quick = true;

@@ -1,5 +1,5 @@
 // Benchmark B5 (docs/benchmarks.md): how well each method reproduces real point patterns.
-// Every dataset of ../shared/data/points is synthesized into 4x its window with default
+// Every dataset of tests/data/spatstat/points is synthesized into 4x its window with default
 // options, and the output's pair correlation (tessera metrics, spatstat's estimator) is
 // compared with the exemplar's. Two references frame the figures: a uniform random
 // pattern of the same counts (what no structure scores) and a 2 x 2 tiling of the

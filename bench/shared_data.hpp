@@ -1,4 +1,4 @@
-// The shared field datasets (../shared/data/points) for the benchmarks: their names and
+// The real point patterns (tests/data/spatstat/points) for the benchmarks: their names and
 // observation windows.
 #pragma once
 

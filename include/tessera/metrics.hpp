@@ -38,7 +38,7 @@ struct PcfResult {
 PcfResult pair_correlation(const Exemplar& points, const PcfOptions& options = {});
 
 // Relative L2 difference between two PCFs on the same r grid and class pairs,
-// over r >= 3 x bandwidth: sqrt(sum (g_a - g_b)^2 / sum g_a^2), pooled over pairs.
+// over r >= bandwidth: sqrt(sum (g_a - g_b)^2 / sum g_a^2), pooled over pairs.
 double pcf_relative_error(const PcfResult& reference, const PcfResult& other);
 
 // The PCF of `points` on the r values and bandwidth of `grid` (another PCF), so the two
@@ -60,6 +60,50 @@ NearestNeighborStats nearest_neighbor_distances(const Exemplar& points);
 // boundary are skipped (their neighbourhood is cut); 0 = automatic: 1.5 x mean
 // nearest-neighbour distance. Returns the mean over the elements kept.
 double mean_psi6(const Exemplar& points, double boundary_margin = 0.0);
+
+// --- Defects a user sees at a glance (docs/metrics.md, "Defects") ---
+
+// Crowding of one ordered class pair (a, b): `threshold` is the exemplar's `quantile`
+// (1% by default; linear interpolation) of the distances from an a element to its nearest
+// b element; the shares are the fractions of a elements whose nearest b is closer than it.
+// An output with many more such elements than the exemplar has near-duplicates or
+// crowded seams. `*_coincident` count a elements with a b closer than threshold / 100.
+struct CrowdingPair {
+    int class_a = 0, class_b = 0;  // exemplar type indices
+    std::string name_a, name_b;
+    double threshold = 0.0;
+    double exemplar_share = 0.0, output_share = 0.0;
+    int exemplar_coincident = 0, output_coincident = 0;
+    long output_elements = 0;      // a elements in the output
+};
+// One entry per ordered class pair of which the exemplar has at least 2 distances and
+// whose names the output also has. Positions are element centroids.
+std::vector<CrowdingPair> crowding(const Exemplar& exemplar, const Exemplar& output, double quantile = 0.01);
+
+// The largest ball (circle in 2D) inside the domain that holds no sample: no sample
+// centre and, for elements with a radius, no part of their disk. A hole or a vacancy in
+// an output shows as a radius above the exemplar's. Found on a lattice of a fifth of the
+// typical spacing (a third in 3D) refined by a pattern search: within a few percent.
+struct EmptyCircle {
+    double radius = 0.0;
+    Vec3 center;
+};
+EmptyCircle largest_empty_circle(const Exemplar& data);
+
+// Shapes of multi-sample elements, per type the exemplar and the output share: the mean
+// distance between consecutive samples in both, the 95th percentile of the output's
+// relative deviation from the exemplar's mean length of the same segment, and the 95th
+// percentile of the bend (degrees) between consecutive segments in both.
+struct ShapeStats {
+    std::string type;
+    bool rigid = true;
+    double spacing_exemplar = 0.0, spacing_output = 0.0, spacing_deviation_p95 = 0.0;
+    double bend_exemplar_p95 = 0.0, bend_output_p95 = 0.0;
+};
+std::vector<ShapeStats> shape_statistics(const Exemplar& exemplar, const Exemplar& output);
+
+// Share of the samples inside the data's own domain (Domain::inside, exact for every kind).
+double inside_fraction(const Exemplar& data);
 
 // Report comparing an exemplar and an output, as JSON text (what `tessera metrics` prints).
 std::string metrics_report_json(const Exemplar& exemplar, const Exemplar& output,

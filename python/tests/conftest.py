@@ -9,7 +9,8 @@ import pytest
 import tessera
 
 ROOT = pathlib.Path(os.environ.get("TESSERA_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
-SHARED_DATA = ROOT.parent / "shared" / "data"
+# Real point patterns (spatstat.data, GPL-2 or later; tests/data/spatstat/README.md).
+SHARED_DATA = ROOT / "tests" / "data" / "spatstat"
 
 
 @pytest.fixture

@@ -1,6 +1,6 @@
 // Pair correlation g(r) per class pair, computed as spatstat 3.0's pcf / pcfcross
 // with kernel = "gaussian", correction = "translate", divisor = "r" (see
-// /work/shared/data/README.md and docs/metrics.md), so tessera's numbers can be
+// tests/data/spatstat/README.md and docs/metrics.md), so tessera's numbers can be
 // held against R's:
 //   g_ab(r) = |W| / (S(r) n_a n_b) sum_{i in a, j in b, i != j} k_h(r - d_ij) e_ij,
 //   e_ij = |W| / |W ∩ (W + x_j - x_i)|,  S(r) = 2 pi r (2D), 4 pi r^2 (3D),

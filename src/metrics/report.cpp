@@ -63,6 +63,38 @@ Summary summarize(const Exemplar& data, const PcfResult& pcf) {
     return s;
 }
 
+// Crowding, holes, shapes and the inside share (the "Defects" of docs/metrics.md).
+Json defects_json(const Exemplar& exemplar, const Exemplar& output) {
+    Json j;
+    Json pairs = Json::array();
+    for (const CrowdingPair& c : crowding(exemplar, output))
+        pairs.push_back({{"a", c.name_a},
+                         {"b", c.name_b},
+                         {"threshold", c.threshold},
+                         {"exemplar_share", c.exemplar_share},
+                         {"output_share", c.output_share},
+                         {"exemplar_coincident", c.exemplar_coincident},
+                         {"output_coincident", c.output_coincident}});
+    j["crowding"] = std::move(pairs);
+    const EmptyCircle ex = largest_empty_circle(exemplar), out = largest_empty_circle(output);
+    j["largest_empty_circle"] = {{"exemplar", ex.radius},
+                                 {"output", out.radius},
+                                 {"ratio", ex.radius > 0.0 ? Json(out.radius / ex.radius) : Json(nullptr)},
+                                 {"output_center", {out.center.x, out.center.y, out.center.z}}};
+    Json shapes = Json::array();
+    for (const ShapeStats& s : shape_statistics(exemplar, output))
+        shapes.push_back({{"type", s.type},
+                          {"rigid", s.rigid},
+                          {"spacing_exemplar", s.spacing_exemplar},
+                          {"spacing_output", s.spacing_output},
+                          {"spacing_deviation_p95", s.spacing_deviation_p95},
+                          {"bend_exemplar_p95", s.bend_exemplar_p95},
+                          {"bend_output_p95", s.bend_output_p95}});
+    j["shapes"] = std::move(shapes);
+    j["inside_fraction"] = inside_fraction(output);
+    return j;
+}
+
 }  // namespace
 
 std::string metrics_report_json(const Exemplar& exemplar, const Exemplar& output, const PcfOptions& options) {
@@ -82,6 +114,7 @@ std::string metrics_report_json(const Exemplar& exemplar, const Exemplar& output
     const bool nn_defined = exemplar.elements.size() >= 2 && output.elements.size() >= 2 && ex.nn.mean > 0.0;
     report["nn_mean_relative_difference"] = nn_defined ? Json((out.nn.mean - ex.nn.mean) / ex.nn.mean) : Json(nullptr);
     if (exemplar.dimension == 2) report["psi6_difference"] = finite_or_null(out.psi6 - ex.psi6);
+    report["defects"] = defects_json(exemplar, output);
     return report.dump(2);
 }
 

@@ -1,6 +1,6 @@
-// Test helper: reads the shared field data (/work/shared/data: spatstat point
-// patterns, their windows and spatstat's reference PCFs) without the io module,
-// which is written concurrently and must not be a dependency of the metrics tests.
+// Test helper: reads the real point patterns of tests/data/spatstat (spatstat.data field
+// data, their windows and spatstat's reference PCFs; README.md there gives source and
+// licence) without the io module, so the metrics tests do not depend on it.
 #pragma once
 
 #include <cmath>
