@@ -65,7 +65,8 @@ double mean_psi6(const Exemplar& points, double boundary_margin = 0.0);
 
 // Crowding of one ordered class pair (a, b): `threshold` is the exemplar's `quantile`
 // (1% by default; linear interpolation) of the distances from an a element to its nearest
-// b element; the shares are the fractions of a elements whose nearest b is closer than it.
+// b element; the shares are the fractions of a elements whose nearest b is not farther
+// (<=: an exemplar whose closest pair is mutual still has a share above 0).
 // An output with many more such elements than the exemplar has near-duplicates or
 // crowded seams. `*_coincident` count a elements with a b closer than threshold / 100.
 struct CrowdingPair {

@@ -57,7 +57,7 @@ std::vector<CrowdingPair> crowding(const Exemplar& exemplar, const Exemplar& out
             pair.threshold = core::quantile_of(d, quantile);
             const double close = pair.threshold / 100.0;
             for (double v : d) {
-                pair.exemplar_share += v < pair.threshold;
+                pair.exemplar_share += v <= pair.threshold;
                 pair.exemplar_coincident += v < close;
             }
             pair.exemplar_share /= static_cast<double>(d.size());
@@ -74,7 +74,7 @@ std::vector<CrowdingPair> crowding(const Exemplar& exemplar, const Exemplar& out
     for (CrowdingPair& c : result) {
         const int oa = output.find_type(c.name_a), ob = output.find_type(c.name_b);
         for (double v : out[oa * out_types + ob]) {
-            c.output_share += v < c.threshold;
+            c.output_share += v <= c.threshold;
             c.output_coincident += v < c.threshold / 100.0;
         }
         c.output_elements = count[oa];
