@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/crowding_repair.hpp"
 #include "core/parallel.hpp"
 #include "core/run_clock.hpp"
 #include "det/assign.hpp"
+#include "det/floor.hpp"
 #include "det/init.hpp"
 #include "det/input_index.hpp"
 #include "det/search.hpp"
@@ -21,6 +23,16 @@ namespace {
 using core::Clock;
 using core::report;
 using core::seconds_since;
+
+// Floor elements keep their elevation (section 5): the crowding repair moves them level only.
+void hold_floor_levels(core::CrowdingRepairOptions& repair, const Arrangement& out, const Domain& domain,
+                       const det::Params& params) {
+    repair.held_level.clear();
+    if (!params.floor_constraints) return;
+    repair.held_level = det::floor_elements(out, domain, params.gravity, params.floor_distance, params.boundary);
+    for (char& held : repair.held_level) held &= det::floor_bit;
+    repair.level_axis = params.gravity.vector();
+}
 
 }  // namespace
 
@@ -63,6 +75,11 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         stats.notes.push_back(note);
     }
 
+    // The exemplar's close-distance tails bound the output's (core/crowding_repair.hpp): a
+    // separation sub-step after every iteration, like the interleaved physics of section 5.
+    const core::NearestDistanceTails tails(exemplar);
+    core::CrowdingRepairOptions repair;
+    repair.threads = threads;
     const det::SearchSettings search{options.search, threads};
     PhysicsOptions physics = options.physics_options;
     if (options.physics && physics.gravity == Vec3{})
@@ -84,9 +101,19 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
             }
             step_physics(state.arrangement, domain, physics);
         }
+        hold_floor_levels(repair, state.arrangement, domain, params);
+        core::repair_crowding(state.arrangement, domain, tails, repair);
         report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
     }
     det::keep_inside_domain(state.arrangement, domain, params.dimension);
+    {
+        hold_floor_levels(repair, state.arrangement, domain, params);
+        const core::CrowdingRepairReport fixed = core::repair_crowding(state.arrangement, domain, tails, repair);
+        if (fixed.bound_hit)
+            stats.notes.push_back("crowding repair: " + std::to_string(fixed.remaining) +
+                                  " elements are still closer to a neighbour than the exemplar allows after " +
+                                  std::to_string(fixed.rounds) + " rounds");
+    }
     det::update_poses(state, index, params.dimension);
     if (options.physics) {
         const PhysicsReport after = measure_physics(state.arrangement, domain, physics.gravity, physics.tolerance);

@@ -1,0 +1,200 @@
+#include "core/crowding_repair.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+#include <utility>
+
+#include "core/nearest_by_type.hpp"
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+#include "core/spatial_grid.hpp"
+
+namespace tessera::core {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A pushed element lands this much beyond its bound, so rounding cannot leave it just short.
+constexpr double kOvershoot = 1.02;
+
+// The inverse of the empirical distribution function (R's type 1): the smallest value with
+// at least a share u of the values at or below it. A faithful copy of the exemplar then
+// never breaks a bound: its k-th closest element is at or above the bound of rank k.
+double lower_quantile(const std::vector<double>& sorted, double u) {
+    if (sorted.empty()) return 0.0;
+    const double position = std::ceil(std::clamp(u, 0.0, 1.0) * static_cast<double>(sorted.size())) - 1.0;
+    return sorted[static_cast<size_t>(std::clamp(position, 0.0, static_cast<double>(sorted.size() - 1)))];
+}
+
+
+// An element closer to its nearest b than its rank allows.
+struct Violation {
+    int element = -1, neighbour = -1;
+    double distance = 0.0, bound = 0.0;
+};
+
+// The violations of the current state: per ordered type pair, the a elements ranked by
+// their distance to the nearest b, each against the exemplar quantile of its rank.
+std::vector<Violation> find_violations(const Exemplar& data, const NearestDistanceTails& tails,
+                                       const CrowdingRepairOptions& o) {
+    const int types = tails.types();
+    const int n = static_cast<int>(data.elements.size());
+    std::vector<Violation> found;
+    if (n < 2 || types == 0 || static_cast<int>(data.types.size()) != types) return found;
+    const double reach = tails.reach(o.tail);
+    if (!(reach > 0.0)) return found;
+    const std::vector<Vec3> p = centroids_of(data);
+    SpatialGrid grid;
+    grid.build(p, reach, data.dimension);
+    // Per element and type: the nearest other element of that type within reach.
+    std::vector<int> nearest(static_cast<size_t>(n) * types, -1);
+    std::vector<double> distance(static_cast<size_t>(n) * types, kInf);
+    parallel_for(n, resolve_threads(o.threads), [&](int begin, int end, int) {
+        for (int i = begin; i < end; ++i)
+            grid.for_each_within(p[i], reach, [&](int j, double d2) {
+                if (j == i) return;
+                const size_t slot = static_cast<size_t>(i) * types + data.elements[j].type;
+                const double d = std::sqrt(d2);
+                if (d < distance[slot] || (d == distance[slot] && j < nearest[slot])) distance[slot] = d, nearest[slot] = j;
+            });
+    });
+    std::vector<long> count(types, 0);
+    for (const Element& e : data.elements) ++count[e.type];
+    // (distance, the pair's lower element, the element): the two ends of a mutual pair are
+    // adjacent in the ranking, so a share of close pairs the exemplar allows stays whole.
+    std::vector<std::tuple<double, int, int>> ranked;
+    for (int a = 0; a < types; ++a)
+        for (int b = 0; b < types; ++b) {
+            if (tails.distances(a, b).empty() || count[a] == 0) continue;
+            ranked.clear();
+            for (int i = 0; i < n; ++i)
+                if (data.elements[i].type == a && nearest[static_cast<size_t>(i) * types + b] >= 0)
+                    ranked.emplace_back(distance[static_cast<size_t>(i) * types + b],
+                                        std::min(i, nearest[static_cast<size_t>(i) * types + b]), i);
+            std::sort(ranked.begin(), ranked.end());
+            for (size_t k = 0; k < ranked.size(); ++k) {
+                const double u = static_cast<double>(k + 1) / (static_cast<double>(count[a]) * o.slack);
+                if (u > o.tail) break;
+                const double bound = tails.quantile(a, b, u);
+                const auto [d, lower, i] = ranked[k];
+                if (d < bound * (1.0 - 1e-9))
+                    found.push_back({i, nearest[static_cast<size_t>(i) * types + b], d, bound});
+            }
+        }
+    return found;
+}
+
+// A unit direction for a coincident pair, the same for any thread count; i and j get
+// opposite ones.
+Vec3 separation_direction(const Exemplar& data, int i, int j) {
+    const KeyedRng rng(0x7e55e7a, Purpose::tie_break, static_cast<std::uint64_t>(std::min(i, j)),
+                       static_cast<std::uint64_t>(std::max(i, j)));
+    Vec3 v;
+    if (data.dimension == 2) {
+        const double angle = 2.0 * 3.14159265358979323846 * rng.uniform(0);
+        v = {std::cos(angle), std::sin(angle), 0.0};
+    } else {
+        const double z = 2.0 * rng.uniform(0) - 1.0, angle = 2.0 * 3.14159265358979323846 * rng.uniform(1);
+        const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+        v = {s * std::cos(angle), s * std::sin(angle), z};
+    }
+    return i < j ? v : -v;
+}
+
+// Moves element e by `shift` if all its samples stay inside; else by half of it; else not.
+bool move_element(Exemplar& data, int e, const Vec3& shift, const Domain& domain) {
+    Element& el = data.elements[e];
+    for (double f : {1.0, 0.5}) {
+        const Vec3 s = shift * f;
+        bool inside = true;
+        for (int k = 0; k < el.sample_count && inside; ++k) inside = domain.inside(data.samples[el.first_sample + k].p + s);
+        if (!inside) continue;
+        for (int k = 0; k < el.sample_count; ++k) data.samples[el.first_sample + k].p += s;
+        el.position += s;
+        return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+NearestDistanceTails::NearestDistanceTails(const Exemplar& exemplar) : types_(static_cast<int>(exemplar.types.size())) {
+    sorted_.assign(static_cast<size_t>(types_) * types_, {});
+    const std::vector<Vec3> p = centroids_of(exemplar);
+    if (p.size() < 2) return;
+    // Every distance, whatever its length: the exemplar is small.
+    Vec3 lo = p[0], hi = p[0];
+    for (const Vec3& q : p)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+    const double diagonal = norm(hi - lo) * 1.001 + 1e-300;
+    SpatialGrid grid;
+    grid.build(p, std::max(diagonal / 32.0, 1e-300), exemplar.dimension);
+    const std::vector<double> nearest = nearest_by_type(exemplar, p, grid, diagonal);
+    for (size_t i = 0; i < p.size(); ++i)
+        for (int b = 0; b < types_; ++b) {
+            const double d = nearest[i * types_ + b];
+            if (std::isfinite(d)) sorted_[exemplar.elements[i].type * types_ + b].push_back(d);
+        }
+    for (auto& v : sorted_) std::sort(v.begin(), v.end());
+}
+
+double NearestDistanceTails::quantile(int a, int b, double u) const { return lower_quantile(distances(a, b), u); }
+
+double NearestDistanceTails::reach(double tail) const {
+    double r = 0.0;
+    for (const auto& v : sorted_) r = std::max(r, lower_quantile(v, tail));
+    return r;
+}
+
+double NearestDistanceTails::hard_core(int a, int b) const {
+    const auto& ab = distances(a, b);
+    const auto& ba = distances(b, a);
+    if (ab.empty() && ba.empty()) return 0.0;
+    return std::min(ab.empty() ? kInf : ab.front(), ba.empty() ? kInf : ba.front());
+}
+
+CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const NearestDistanceTails& tails,
+                                     const CrowdingRepairOptions& o) {
+    CrowdingRepairReport report;
+    data.update_positions();  // positions are the samples' centroids (a caller may have moved samples)
+    if (data.dimension == 2)
+        for (Element& e : data.elements) e.position.z = 0.0;
+    for (int round = 0; round < o.rounds; ++round) {
+        const std::vector<Violation> found = find_violations(data, tails, o);
+        report.remaining = static_cast<int>(found.size());
+        if (found.empty()) return report;
+        ++report.rounds;
+        // Mutual violations (each the other's too-close neighbour) share the correction.
+        std::map<std::pair<int, int>, int> pairs;
+        for (const Violation& v : found) ++pairs[{v.element, v.neighbour}];
+        std::vector<Vec3> shift(data.elements.size());
+        std::vector<char> has_shift(data.elements.size(), 0);
+        for (const Violation& v : found) {
+            if (data.elements[v.element].locked) continue;
+            const bool shared = pairs.count({v.neighbour, v.element}) > 0 && !data.elements[v.neighbour].locked;
+            Vec3 away = data.elements[v.element].position - data.elements[v.neighbour].position;
+            if (data.dimension == 2) away.z = 0.0;
+            const double length = norm(away);
+            away = length > 1e-12 * v.bound ? away * (1.0 / length) : separation_direction(data, v.element, v.neighbour);
+            const double gap = (v.bound * kOvershoot - v.distance) * (shared ? 0.5 : 1.0);
+            Vec3 move = away * gap;
+            if (!o.held_level.empty() && o.held_level[v.element]) move -= o.level_axis * dot(move, o.level_axis);
+            shift[v.element] += move;
+            has_shift[v.element] = 1;
+        }
+        for (size_t e = 0; e < data.elements.size(); ++e)
+            if (has_shift[e] && move_element(data, static_cast<int>(e), shift[e], domain)) ++report.moved;
+    }
+    report.remaining = static_cast<int>(find_violations(data, tails, o).size());
+    report.bound_hit = report.remaining > 0;
+    return report;
+}
+
+int count_crowded(const Exemplar& data, const NearestDistanceTails& tails, const CrowdingRepairOptions& options) {
+    return static_cast<int>(find_violations(data, tails, options).size());
+}
+
+}  // namespace tessera::core

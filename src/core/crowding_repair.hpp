@@ -1,0 +1,80 @@
+// Crowding repair: no output holds more close pairs than its exemplar.
+//
+// A synthesis method reproduces an exemplar's typical spacing, but where its pieces meet
+// (patch seams, a least-squares compromise, a random insertion) two elements can end up
+// closer together than the exemplar ever shows them, or on top of each other. Such
+// near-duplicates are the first thing a viewer notices and barely move the averages
+// (the pair correlation) a method optimises.
+//
+// The exemplar tells how close elements may come: for each ordered pair of element types
+// (a, b), the distribution of the distance from an a element to its nearest b element.
+// The repair holds the lower tail of the output's distribution to the exemplar's: ranking
+// the output's a elements by that distance, the k-th of n_a may be no closer than the
+// exemplar's quantile at k / (n_a * slack), for the lowest `tail` share. So a clustered
+// exemplar keeps its legitimate close pairs, an exemplar with a few coincident pairs may
+// keep that share of them (its quantiles are 0 there), and a hard-core pattern keeps its
+// hard core; nothing beyond the tail is touched. Elements that break the bound are pushed
+// apart from their nearest b (half each when the violation is mutual), whole elements
+// move rigidly, locked ones never move, and no element is moved out of the domain. The
+// rounds are bounded and the report says when the bound was hit.
+#pragma once
+
+#include <vector>
+
+#include "tessera/domain.hpp"
+#include "tessera/exemplar.hpp"
+
+namespace tessera::core {
+
+// Per ordered type pair (a, b): the sorted distances from each exemplar a element
+// (centroid) to its nearest other b element.
+class NearestDistanceTails {
+public:
+    NearestDistanceTails() = default;
+    explicit NearestDistanceTails(const Exemplar& exemplar);
+
+    int types() const { return types_; }
+    // Exemplar distances for (a, b), ascending (empty when b never neighbours a).
+    const std::vector<double>& distances(int a, int b) const { return sorted_[a * types_ + b]; }
+    // The u-quantile of distances(a, b): the smallest distance with a share u at or below it
+    // (the inverse empirical distribution, R's type 1); 0 when empty.
+    double quantile(int a, int b, double u) const;
+    // The largest distance any repair bound can ask for: the `tail` quantile over all pairs.
+    double reach(double tail) const;
+    // The smallest exemplar distance of (a, b) or (b, a), or 0 when neither is known:
+    // closer than this two elements of these types never are.
+    double hard_core(int a, int b) const;
+
+private:
+    int types_ = 0;
+    std::vector<std::vector<double>> sorted_;
+};
+
+struct CrowdingRepairOptions {
+    double tail = 0.1;   // share of each type's elements (the closest) whose distance is bounded
+    double slack = 1.25; // the output may hold this many times the exemplar's share below any distance
+    int rounds = 12;     // repair rounds at most
+    int threads = 1;     // worker threads (0 = all); results are the same for any value
+    // Elements whose level along `level_axis` must not change (floor elements that keep their
+    // elevation): per element, non-zero = held; empty = none. Their moves keep to the plane.
+    std::vector<char> held_level;
+    Vec3 level_axis{0, 1, 0};
+};
+
+struct CrowdingRepairReport {
+    int moved = 0;        // element moves made
+    int rounds = 0;       // rounds run
+    int remaining = 0;    // elements still closer than their bound after the last round
+    bool bound_hit = false;  // stopped by `rounds` with violations left
+};
+
+// Repairs `data` (elements with their samples; types as in `tails`) in place (element
+// positions are first recomputed from the samples), keeping
+// every moved sample inside `domain`. Deterministic for any thread count.
+CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const NearestDistanceTails& tails,
+                                     const CrowdingRepairOptions& options = {});
+
+// Count of elements closer than their bound (what repair_crowding would move), without moving.
+int count_crowded(const Exemplar& data, const NearestDistanceTails& tails, const CrowdingRepairOptions& options = {});
+
+}  // namespace tessera::core
