@@ -19,6 +19,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // A pushed element lands this much beyond its bound, so rounding cannot leave it just short.
 constexpr double kOvershoot = 1.02;
+// The tail bounded per type pair holds at least this many of the exemplar's closest distances.
+constexpr double kLeastOrder = 3.0;
 
 // The inverse of the empirical distribution function (R's type 1): the smallest value with
 // at least a share u of the values at or below it. A faithful copy of the exemplar then
@@ -29,6 +31,14 @@ double lower_quantile(const std::vector<double>& sorted, double u) {
     return sorted[static_cast<size_t>(std::clamp(position, 0.0, static_cast<double>(sorted.size() - 1)))];
 }
 
+
+// The share of an ordered pair's distribution whose quantiles bound the output: `tail`,
+// and at least three of the exemplar's distances beyond its closest ones and their ties.
+double bounded_tail(const std::vector<double>& sorted, double tail) {
+    if (sorted.empty()) return tail;
+    const auto ties = std::upper_bound(sorted.begin(), sorted.end(), sorted.front()) - sorted.begin();
+    return std::max(tail, (static_cast<double>(ties) + kLeastOrder) / static_cast<double>(sorted.size()));
+}
 
 // An element closer to its nearest b than its rank allows.
 struct Violation {
@@ -75,10 +85,16 @@ std::vector<Violation> find_violations(const Exemplar& data, const NearestDistan
                     ranked.emplace_back(distance[static_cast<size_t>(i) * types + b],
                                         std::min(i, nearest[static_cast<size_t>(i) * types + b]), i);
             std::sort(ranked.begin(), ranked.end());
+            // The bounded tail: the `tail` share, and at least three of the exemplar's distances
+            // beyond its closest ones and their ties (a small exemplar's lowest quantiles are its
+            // few closest pairs; coincident pairs make many ties at 0).
+            const double tail = bounded_tail(tails.distances(a, b), o.tail);
+            // Beyond the tail's share every element must lie beyond the tail's distance.
+            const double tail_distance = tails.quantile(a, b, tail);
             for (size_t k = 0; k < ranked.size(); ++k) {
                 const double u = static_cast<double>(k + 1) / (static_cast<double>(count[a]) * o.slack);
-                if (u > o.tail) break;
-                const double bound = tails.quantile(a, b, u);
+                if (u > tail && std::get<0>(ranked[k]) >= tail_distance) break;
+                const double bound = u > tail ? tail_distance : tails.quantile(a, b, u);
                 const auto [d, lower, i] = ranked[k];
                 if (d < bound * (1.0 - 1e-9))
                     found.push_back({i, nearest[static_cast<size_t>(i) * types + b], d, bound});
@@ -145,7 +161,8 @@ double NearestDistanceTails::quantile(int a, int b, double u) const { return low
 
 double NearestDistanceTails::reach(double tail) const {
     double r = 0.0;
-    for (const auto& v : sorted_) r = std::max(r, lower_quantile(v, tail));
+    for (const auto& v : sorted_)
+        if (!v.empty()) r = std::max(r, lower_quantile(v, bounded_tail(v, tail)));
     return r;
 }
 
@@ -193,8 +210,14 @@ CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const
     return report;
 }
 
-int count_crowded(const Exemplar& data, const NearestDistanceTails& tails, const CrowdingRepairOptions& options) {
-    return static_cast<int>(find_violations(data, tails, options).size());
+std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const NearestDistanceTails& tails,
+                                       const CrowdingRepairOptions& options) {
+    std::vector<CrowdedPair> pairs;
+    for (const Violation& v : find_violations(data, tails, options)) pairs.push_back({v.element, v.neighbour});
+    std::sort(pairs.begin(), pairs.end(), [](const CrowdedPair& a, const CrowdedPair& b) {
+        return a.element != b.element ? a.element < b.element : a.neighbour < b.neighbour;
+    });
+    return pairs;
 }
 
 }  // namespace tessera::core

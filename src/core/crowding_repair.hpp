@@ -10,7 +10,8 @@
 // (a, b), the distribution of the distance from an a element to its nearest b element.
 // The repair holds the lower tail of the output's distribution to the exemplar's: ranking
 // the output's a elements by that distance, the k-th of n_a may be no closer than the
-// exemplar's quantile at k / (n_a * slack), for the lowest `tail` share. So a clustered
+// exemplar's quantile at k / (n_a * slack), for the lowest `tail` share (and at least the
+// exemplar's three closest distances). So a clustered
 // exemplar keeps its legitimate close pairs, an exemplar with a few coincident pairs may
 // keep that share of them (its quantiles are 0 there), and a hard-core pattern keeps its
 // hard core; nothing beyond the tail is touched. Elements that break the bound are pushed
@@ -51,7 +52,8 @@ private:
 };
 
 struct CrowdingRepairOptions {
-    double tail = 0.1;   // share of each type's elements (the closest) whose distance is bounded
+    double tail = 0.03;  // share of each type's elements (the closest) whose distance is bounded,
+                         // and at least the share of the exemplar's three closest distances
     double slack = 1.25; // the output may hold this many times the exemplar's share below any distance
     int rounds = 12;     // repair rounds at most
     int threads = 1;     // worker threads (0 = all); results are the same for any value
@@ -74,7 +76,13 @@ struct CrowdingRepairReport {
 CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const NearestDistanceTails& tails,
                                      const CrowdingRepairOptions& options = {});
 
-// Count of elements closer than their bound (what repair_crowding would move), without moving.
-int count_crowded(const Exemplar& data, const NearestDistanceTails& tails, const CrowdingRepairOptions& options = {});
+// An element closer to its nearest neighbour of some type than its rank allows, and that neighbour.
+struct CrowdedPair {
+    int element = -1, neighbour = -1;
+};
+// The elements repair_crowding would move now (one entry per element and neighbour type),
+// without moving anything; in element order.
+std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const NearestDistanceTails& tails,
+                                       const CrowdingRepairOptions& options = {});
 
 }  // namespace tessera::core

@@ -4,12 +4,18 @@
 #include <cmath>
 
 #include "core/rng.hpp"
+#include "det/layers.hpp"
 #include "det/structure_range.hpp"
 #include "tessera/error.hpp"
 
 namespace tessera::det {
 
 namespace {
+
+// Iterations of the registration of a random window onto the band (translation only).
+constexpr int kRegistrationSteps = 3;
+// Seam duplicates are elements closer than this share of the exemplar's closest distance.
+constexpr double kDuplicateShare = 0.75;
 
 struct CellGrid {
     int dims[3] = {1, 1, 1};
@@ -65,56 +71,6 @@ std::vector<double> closest_type_pairs(const Exemplar& exemplar, const std::vect
     return closest;
 }
 
-// Axes along which the exemplar is a thin layer: thinner than one neighbourhood
-// diameter (2 x radius). Such an exemplar cannot offer a cubic window of patch size.
-struct LayerAxes {
-    bool thin[3] = {false, false, false};
-    bool any = false;
-};
-
-LayerAxes layer_axes(const Box& in_box, int dim, double radius) {
-    LayerAxes layer;
-    int thin_count = 0;
-    for (int k = 0; k < dim; ++k) {
-        layer.thin[k] = in_box.hi[k] - in_box.lo[k] < 2.0 * radius;
-        thin_count += layer.thin[k];
-    }
-    if (thin_count == dim) return {};  // a tiny exemplar, not a layer: the usual windows
-    layer.any = thin_count > 0;
-    return layer;
-}
-
-// Slides a cell's window centre along each thin axis (turned by the local frame) to the
-// middle of the nearest run of domain inside that line, within +-patch: the layer then
-// lands in the domain (a shell under a surface) instead of wherever the cell's centre is.
-Vec3 onto_layer(const Vec3& center, const Quat& rotation, const LayerAxes& layer, const Box& in_box,
-                const Domain& domain, double patch, int dim) {
-    Vec3 out = center;
-    for (int k = 0; k < dim; ++k) {
-        if (!layer.thin[k]) continue;
-        Vec3 axis;
-        axis[k] = 1.0;
-        const Vec3 dir = rotation.rotate(axis);
-        const double step = std::max(0.25 * (in_box.hi[k] - in_box.lo[k]), patch / 64.0);
-        const int steps = static_cast<int>(std::ceil(patch / step));  // bounded: <= 64 each way
-        // The inside run nearest to t = 0, searched outward.
-        int first = 1, last = 0;  // empty
-        for (int r = 0; r <= steps && first > last; ++r)
-            for (int sign : {1, -1}) {
-                const int t = sign * r;
-                if (domain.inside(out + dir * (t * step))) {
-                    first = last = t;
-                    break;
-                }
-            }
-        if (first > last) continue;  // no domain on this line: leave the centre
-        while (first - 1 >= -steps && domain.inside(out + dir * ((first - 1) * step))) --first;
-        while (last + 1 <= steps && domain.inside(out + dir * ((last + 1) * step))) ++last;
-        out = out + dir * (0.5 * (first + last) * step);
-    }
-    return out;
-}
-
 // Where a patch goes: the window around in_center is laid down around out_center,
 // turned by the local frame of the orientation field there (Eq. 7).
 struct PatchMap {
@@ -124,60 +80,72 @@ struct PatchMap {
     Vec3 to_input(const Vec3& q) const { return in_center + rotation.conjugate().rotate(q - out_center); }
 };
 
-}  // namespace
+// What a cell's candidate windows are judged against.
+struct CellContext {
+    int cell = 0;
+    Vec3 lo;                          // the cell's lower corner
+    std::vector<int> band_elements;   // output elements already placed in the band around it
+    std::vector<Vec3> probes;         // boundary-occupancy probes (empty away from the boundary)
+    double expected = 0.0;            // the exemplar's count for the cell
+};
 
-std::vector<Vec3> element_centroids(const std::vector<Element>& elements, int dimension) {
-    std::vector<Vec3> p;
-    p.reserve(elements.size());
-    for (const Element& e : elements) {
-        Vec3 q = e.position;
-        if (dimension == 2) q.z = 0.0;
-        p.push_back(q);
-    }
-    return p;
-}
+// The patch-copy initialization, one cell after the other in raster order.
+class PatchCopier {
+public:
+    PatchCopier(const Exemplar& exemplar, const Domain& domain, const Params& params, const DetOptions& options)
+        : ex_(exemplar), domain_(domain), params_(params), options_(options), dim_(params.dimension),
+          in_box_(exemplar.domain.bounds()), out_box_(domain.bounds()),
+          layer_(layer_axes(in_box_, dim_, params.radius)), rng_(options.seed, core::Purpose::patch_choice) {}
 
-int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,
-                int dimension) {
-    Arrangement& out = init.arrangement;
-    const Element& src = exemplar.elements[source];
-    Element e = src;
-    e.first_sample = static_cast<int>(out.samples.size());
-    e.id = out.elements.size();
-    e.locked = false;
-    const int index_out = static_cast<int>(out.elements.size());
-    for (int s = 0; s < src.sample_count; ++s) {
-        Sample smp = exemplar.samples[src.first_sample + s];
-        smp.p = rotation.rotate(smp.p) + shift;
-        if (dimension == 2) smp.p.z = 0.0;
-        smp.element = index_out;
-        out.samples.push_back(smp);
-        init.source_sample.push_back(src.first_sample + s);
-    }
-    e.position = rotation.rotate(src.position) + shift;
-    e.orientation = rotation * src.orientation;
-    if (dimension == 2) e.position.z = 0.0;
-    out.elements.push_back(std::move(e));
-    init.source_element.push_back(source);
-    return index_out;
-}
+    InitResult run();
 
-InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*index*/, const Domain& domain,
-                              const Params& params, const DetOptions& options) {
-    const int dim = params.dimension;
-    const Box in_box = exemplar.domain.bounds();
-    const Box out_box = domain.bounds();
-    // A layered exemplar (a wall one brick thick, a sheet) is thinner than a neighbourhood
-    // along some axis. Such thin axes do not limit the patch size: the window spans the
-    // whole layer along them, and each output cell's window is slid along the (field-
-    // turned) thin axis onto the domain, so a shell under a surface receives one layer.
-    const LayerAxes layer = layer_axes(in_box, dim, params.radius);
+private:
+    void choose_patch();
+    void prepare();
+    CellContext context_of(int c) const;
+    std::vector<Vec3> candidate_centres(const CellContext& cell, int tries) const;
+    Vec3 random_centre(const CellContext& cell, int j) const;
+    double score(const PatchMap& map, const CellContext& cell);
+    void register_window(PatchMap& map, const CellContext& cell, double& best_score);
+    void window_elements_in_cell(const PatchMap& m, const Vec3& clo, std::vector<int>& elements) const;
+    double deficit(int t, double expected) const;
+    void copy(const PatchMap& map, const CellContext& cell);
+
+    const Exemplar& ex_;
+    const Domain& domain_;
+    const Params& params_;
+    const DetOptions& options_;
+    const int dim_;
+    const Box in_box_, out_box_;
+    const LayerAxes layer_;
+    const core::KeyedRng rng_;
+
+    double patch_ = 0.0, structure_ = 0.0, band_ = 0.0, window_reach_ = 0.0;
+    Vec3 window_size_, window_half_;
+    CellGrid cells_;
+    std::vector<Vec3> in_centers_;
+    core::SpatialGrid in_grid_;
+    int types_ = 0;
+    std::vector<double> min_gap_;  // seam-duplicate distance per type pair
+    bool balance_count_ = false;
+    double density_ = 0.0;
+    std::vector<double> share_;    // per type: its share of the density
+
+    InitResult result_;
+    std::vector<std::vector<int>> placed_;  // output elements per cell (by centroid)
+    std::vector<Vec3> chosen_;              // per cell: the centre of its window in the exemplar
+    std::vector<char> has_chosen_;
+    std::vector<int> placed_of_type_, window_counts_, window_;
+    std::vector<char> dropped_;             // per output element: taken out again by a seam conflict
+    double expected_so_far_ = 0.0;
+};
+
+void PatchCopier::choose_patch() {
     double min_extent = INFINITY;
-    for (int k = 0; k < dim; ++k)
-        if (!layer.thin[k]) min_extent = std::min(min_extent, in_box.hi[k] - in_box.lo[k]);
-    if (!std::isfinite(min_extent)) min_extent = 2.0 * params.radius;
-    double patch = options.patch_size;
-    double structure = 0.0;
+    for (int k = 0; k < dim_; ++k)
+        if (!layer_.thin[k]) min_extent = std::min(min_extent, in_box_.hi[k] - in_box_.lo[k]);
+    if (!std::isfinite(min_extent)) min_extent = 2.0 * params_.radius;
+    double patch = options_.patch_size;
     if (!(patch > 0.0)) {
         // The paper's patch is one neighbourhood (2r). An exemplar structured beyond it
         // (clusters, wide gaps, long rows, a lattice) gets patches twice its structure
@@ -185,241 +153,338 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*inde
         // and multi-class field data this halves the output's PCF error (docs/det.md).
         // Not with an orientation field or thin layers, where each patch is turned by
         // the frame at its cell's centre only.
-        patch = 2.0 * params.radius;
-        if (!params.field.active() && !layer.any) {
-            const double limit = std::min(0.25 * min_extent, 12.0 * params.spacing);
-            if (limit > params.radius) structure = structure_range(exemplar, params.spacing, limit);
-            patch = std::max(patch, 2.0 * structure);
+        patch = 2.0 * params_.radius;
+        if (!params_.field.active() && !layer_.any) {
+            const double limit = std::min(0.25 * min_extent, 12.0 * params_.spacing);
+            if (limit > params_.radius) structure_ = structure_range(ex_, params_.spacing, limit);
+            patch = std::max(patch, 2.0 * structure_);
         }
         patch = std::min(patch, 0.5 * min_extent);
     }
-    patch = std::min(patch, min_extent);
+    patch_ = std::min(patch, min_extent);
     // Window extent per axis: the patch, the whole layer along thin axes, and with thin
     // axes a diagonal's worth in-plane, since a turned layer crosses an axis-aligned
     // output cell along up to sqrt(dim) times its side.
-    Vec3 window_size;
-    for (int k = 0; k < dim; ++k) {
-        const double extent = in_box.hi[k] - in_box.lo[k];
-        window_size[k] = layer.thin[k] ? extent : std::min(extent, layer.any ? patch * std::sqrt(double(dim)) : patch);
+    for (int k = 0; k < dim_; ++k) {
+        const double extent = in_box_.hi[k] - in_box_.lo[k];
+        window_size_[k] =
+            layer_.thin[k] ? extent : std::min(extent, layer_.any ? patch_ * std::sqrt(double(dim_)) : patch_);
     }
-    const double window_reach = 0.5 * norm(window_size);  // centre to corner
+    window_half_ = window_size_ * 0.5;
+    window_reach_ = 0.5 * norm(window_size_);  // centre to corner
+}
 
-    CellGrid cells;
-    cells.lo = out_box.lo;
-    cells.size = patch;
-    for (int k = 0; k < dim; ++k)
-        cells.dims[k] = std::max(1, static_cast<int>(std::ceil((out_box.hi[k] - out_box.lo[k]) / patch - 1e-9)));
-    if (static_cast<double>(cells.count()) > 5e7)
+void PatchCopier::prepare() {
+    choose_patch();
+    cells_.lo = out_box_.lo;
+    cells_.size = patch_;
+    for (int k = 0; k < dim_; ++k)
+        cells_.dims[k] = std::max(1, static_cast<int>(std::ceil((out_box_.hi[k] - out_box_.lo[k]) / patch_ - 1e-9)));
+    if (static_cast<double>(cells_.count()) > 5e7)
         throw Error(ErrorKind::option, "--patch-size is too small for this domain (more than 5e7 patches)");
 
-    // Input elements by centroid for window queries.
-    const int n_in = static_cast<int>(exemplar.elements.size());
-    const std::vector<Vec3> in_centers = element_centroids(exemplar.elements, dim);
-    core::SpatialGrid in_grid;
-    in_grid.build(in_centers, std::max(params.spacing, patch / 4.0), dim);
-
-    // Seam duplicates: where two patches meet, both may fill the same place. An
-    // element copied closer to an already placed one than 3/4 of the closest
-    // distance the exemplar shows for that pair of types is such a duplicate and is
-    // not copied (exemplars with overlapping elements have closest distance ~0 and
-    // lose nothing).
-    const int n_types = static_cast<int>(exemplar.types.size());
-    std::vector<double> min_gap = closest_type_pairs(exemplar, in_centers, in_grid, patch);
-    for (double& g : min_gap) g = std::isfinite(g) ? 0.75 * g : 0.0;
-
+    in_centers_ = element_centroids(ex_.elements, dim_);
+    in_grid_.build(in_centers_, std::max(params_.spacing, patch_ / 4.0), dim_);
+    // Seam duplicates: where two patches meet, both may fill the same place. An element
+    // copied closer to an already placed one than 3/4 of the closest distance the exemplar
+    // shows for that pair of types is such a duplicate and is not copied (exemplars with
+    // overlapping elements have closest distance ~0 and lose nothing).
+    types_ = static_cast<int>(ex_.types.size());
+    min_gap_ = closest_type_pairs(ex_, in_centers_, in_grid_, patch_);
+    for (double& g : min_gap_) g = std::isfinite(g) ? kDuplicateShare * g : 0.0;
     // Band around a cell in which the candidate windows are compared with placed elements.
-    const double band = std::min(params.spacing, 0.5 * patch);
-    const double cap2 = params.cap2;
-
-    InitResult result;
-    result.patch_size = patch;
-    result.structure_range = structure;
-    Arrangement& out = result.arrangement;
-    out.dimension = dim;
-    out.types = exemplar.types;
-    out.attribute_names = exemplar.attribute_names;
-    out.domain = domain;
-
-    std::vector<std::vector<int>> placed(cells.count());  // output elements per cell (by centroid)
-    std::vector<int> window;                               // scratch: input elements in a window
-    const core::KeyedRng rng(options.seed, core::Purpose::patch_choice);
-
-    const Vec3 half = Vec3{patch, patch, dim == 3 ? patch : 0.0} * 0.5;
-    const Vec3 window_half = window_size * 0.5;
+    band_ = std::min(params_.spacing, 0.5 * patch_);
 
     // Count balance (error diffusion over the raster order). Windows of a clustered or
-    // uneven exemplar hold very different counts; fill_holes tops up an output that falls
-    // short but nothing takes away from one that overshoots, so random windows alone left
-    // outputs up to 30% overfull (redwood at 4x). Each candidate therefore also pays for
-    // how far the running count would stray from the exemplar's density over the cells
+    // uneven exemplar hold very different counts; the hole filling tops up an output that
+    // falls short but nothing takes away from one that overshoots, so random windows alone
+    // left outputs up to 30% overfull (redwood at 4x). Each candidate therefore also pays
+    // for how far the running count would stray from the exemplar's density over the cells
     // done so far, beyond one cell's worth, at the price of a missing element (cap2) per
     // element, class by class (each class against its own share of the density, so the
     // classes keep their proportions too). Not for layered exemplars, whose cells are not
     // patch-sized along thin axes.
-    const bool balance_count = !layer.any;
-    const double density = static_cast<double>(exemplar.elements.size()) / exemplar.domain.measure();
-    std::vector<double> share(n_types, 0.0);
-    for (const Element& e : exemplar.elements) share[e.type] += 1.0 / static_cast<double>(n_in);
-    std::vector<int> placed_of_type(n_types, 0), window_counts(n_types, 0);
-    double expected_so_far = 0.0;
-    // The exemplar elements (ascending) whose centroids lie in the window (a box, not the
-    // ball around it) and land in the cell and the domain: what a window puts in a cell.
-    auto window_elements_in_cell = [&](const PatchMap& m, const Vec3& clo, std::vector<int>& elements) {
-        elements.clear();
-        in_grid.for_each_within(m.in_center, window_reach + 1e-12, [&](int i, double) {
-            bool in_window = true;
-            for (int k = 0; k < dim; ++k)
-                in_window = in_window && std::abs(in_centers[i][k] - m.in_center[k]) <= window_half[k] + 1e-12;
-            if (!in_window) return;
-            const Vec3 q = m.to_output(in_centers[i]);
-            bool in_cell = true;
-            for (int k = 0; k < dim; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
-            if (in_cell && domain.inside(q)) elements.push_back(i);
-        });
-        std::sort(elements.begin(), elements.end());
-    };
+    balance_count_ = !layer_.any;
+    for (double d : params_.type_density) density_ += d;  // where the elements are (det/density.hpp)
+    share_.assign(types_, 0.0);
+    for (int t = 0; t < types_; ++t) share_[t] = density_ > 0.0 ? params_.type_density[t] / density_ : 0.0;
+    placed_of_type_.assign(types_, 0);
+    window_counts_.assign(types_, 0);
 
-    for (int c = 0; c < cells.count(); ++c) {
-        const Vec3 clo = cells.cell_lo(c);
-        PatchMap map;
-        map.out_center = clo + half;
-        map.rotation = params.field.frame(map.out_center, dim);
-        // The exemplar's count for this cell: density x the cell's measure inside the domain
-        // (from a 4^d lattice of probes).
-        double expected_cell = 0.0;
-        if (balance_count) {
-            constexpr int per_axis = 4;
-            int inside = 0, total = 0;
-            for (int z = 0; z < (dim == 3 ? per_axis : 1); ++z)
-                for (int y = 0; y < per_axis; ++y)
-                    for (int x = 0; x < per_axis; ++x, ++total)
-                        inside += domain.inside(clo + Vec3{(x + 0.5), (y + 0.5), dim == 3 ? (z + 0.5) : 0.0} *
-                                                          (patch / per_axis));
-            expected_cell = density * std::pow(patch, dim) * inside / total;
-        }
-        if (layer.any) map.out_center = onto_layer(map.out_center, map.rotation, layer, in_box, domain, patch, dim);
-        // Output elements already placed in the band around this cell.
-        std::vector<int> band_elements;
-        for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
-            for (int e : placed[nb]) {
-                const Vec3& p = out.elements[e].position;
-                bool near = true;
-                for (int k = 0; k < dim; ++k) near = near && p[k] >= clo[k] - band && p[k] <= clo[k] + patch + band;
-                if (near) band_elements.push_back(e);
-            }
-        });
+    result_.patch_size = patch_;
+    result_.structure_range = structure_;
+    Arrangement& out = result_.arrangement;
+    out.dimension = dim_;
+    out.types = ex_.types;
+    out.attribute_names = ex_.attribute_names;
+    out.domain = domain_;
+    placed_.assign(cells_.count(), {});
+    chosen_.assign(cells_.count(), Vec3{});
+    has_chosen_.assign(cells_.count(), 0);
+}
 
-        // Probes of the cell and its band for boundary-occupancy similarity: only cells
-        // that touch the output boundary need them (elsewhere every window agrees).
-        std::vector<Vec3> probes;
-        {
-            constexpr int per_axis = 5;
-            const double step = (patch + 2.0 * band) / (per_axis - 1);
-            bool touches_boundary = false;
-            for (int z = 0; z < (dim == 3 ? per_axis : 1); ++z)
-                for (int y = 0; y < per_axis; ++y)
-                    for (int x = 0; x < per_axis; ++x) {
-                        const Vec3 q = clo - Vec3{band, band, dim == 3 ? band : 0.0} +
-                                       Vec3{x * step, y * step, dim == 3 ? z * step : 0.0};
-                        probes.push_back(q);
-                        touches_boundary = touches_boundary || !domain.inside(q);
-                    }
-            if (!touches_boundary) probes.clear();
-        }
-
-        // Choose among random windows the one most consistent with the band.
-        Vec3 best_center;
-        double best_score = INFINITY;
-        const int tries =
-            band_elements.empty() && probes.empty() && !balance_count ? 1 : options.patch_candidates;
-        for (int j = 0; j < tries; ++j) {
-            Vec3 origin = in_box.lo;
-            for (int k = 0; k < dim; ++k) {
-                const double span = (in_box.hi[k] - in_box.lo[k]) - window_size[k];
-                origin[k] += span > 0.0 ? span * rng.uniform(static_cast<std::uint64_t>(c) * 64 * 3 + j * 3 + k) : 0.0;
-                // With floor constraints the exemplar's sides are physical (a floor, walls): a
-                // cell on a side of the output's bounds takes its window flush with the same
-                // side of the exemplar, so boundary layers line up. (Without them the exemplar
-                // is a window cut from a larger pattern and any window is as good.)
-                if (params.field.active() || !params.floor_constraints) continue;
-                if (clo[k] <= out_box.lo[k]) {
-                    origin[k] = in_box.lo[k];
-                } else if (clo[k] + patch >= out_box.hi[k]) {
-                    const double flush = in_box.hi[k] - (out_box.hi[k] - clo[k]);
-                    if (flush >= in_box.lo[k]) origin[k] = flush;
-                }
-            }
-            map.in_center = origin + window_half;
-            double score = 0.0;
-            // Placed output elements should find an input element of their type where they sit.
-            for (int e : band_elements) {
-                const Vec3 q = map.to_input(out.elements[e].position);
-                const int type = out.elements[e].type;
-                const int hit = in_grid.nearest(q, params.spacing, [&](int i) { return exemplar.elements[i].type == type; });
-                double d2 = cap2;
-                if (hit >= 0) d2 = std::min(cap2, squared_norm(in_centers[hit] - q));
-                score += d2;
-            }
-            // Input elements that would land in already placed cells should find a placed element.
-            in_grid.for_each_within(map.in_center, window_reach + band * std::sqrt(static_cast<double>(dim)),
-                                    [&](int i, double) {
-                const Vec3 q = map.to_output(in_centers[i]);
-                bool in_band = true, in_cell = true;
-                for (int k = 0; k < dim; ++k) {
-                    in_band = in_band && q[k] >= clo[k] - band && q[k] <= clo[k] + patch + band;
-                    in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch;
-                }
-                if (!in_band || in_cell) return;
-                const int cell = cells.index_of(q, dim);
-                if (cell < 0 || cell >= c) return;  // lands outside, or on a cell not placed yet
-                double d2 = cap2;
-                for (int e : band_elements)
-                    if (out.elements[e].type == exemplar.elements[i].type)
-                        d2 = std::min(d2, squared_norm(out.elements[e].position - q));
-                score += d2;
-            });
-            // Section 4.1: prefer input patches whose boundary occupancy resembles the output's
-            // here (a probe inside one domain but outside the other costs like a missing element).
-            for (const Vec3& q : probes)
-                if (domain.inside(q) != exemplar.domain.inside(map.to_input(q))) score += cap2;
-            if (balance_count) {
-                window_elements_in_cell(map, clo, window);
-                std::fill(window_counts.begin(), window_counts.end(), 0);
-                for (int i : window) ++window_counts[exemplar.elements[i].type];
-                for (int t = 0; t < n_types; ++t) {
-                    const double straying = static_cast<double>(placed_of_type[t] + window_counts[t]) -
-                                            share[t] * (expected_so_far + expected_cell);
-                    score += cap2 * std::max(0.0, std::abs(straying) - std::max(1.0, share[t] * expected_cell));
-                }
-            }
-            if (score < best_score) best_score = score, best_center = map.in_center;
-        }
-
-        // Copy whole elements whose centroid lies in the chosen window (and in the domain).
-        map.in_center = best_center;
-        window_elements_in_cell(map, clo, window);
-        for (int i : window) {
-            const Vec3 q = map.to_output(in_centers[i]);
-            const Element& src = exemplar.elements[i];
-            bool duplicate = false;
-            for_each_earlier_neighbor(cells, c, dim, [&](int nb) {
-                for (int e : placed[nb]) {
-                    const double gap = min_gap[src.type * n_types + out.elements[e].type];
-                    if (gap > 0.0 && squared_norm(out.elements[e].position - q) < gap * gap) duplicate = true;
-                }
-            });
-            if (duplicate) continue;
-            const int index_out = append_copy(result, exemplar, i, map.rotation,
-                                              map.out_center - map.rotation.rotate(map.in_center), dim);
-            const int cell = cells.index_of(out.elements.back().position, dim);
-            placed[cell >= 0 ? cell : c].push_back(index_out);
-            ++placed_of_type[src.type];
-        }
-        expected_so_far += expected_cell;
+CellContext PatchCopier::context_of(int c) const {
+    CellContext cell;
+    cell.cell = c;
+    cell.lo = cells_.cell_lo(c);
+    const Vec3& clo = cell.lo;
+    // The exemplar's count for this cell: density x the cell's measure inside the domain
+    // (from a 4^d lattice of probes).
+    if (balance_count_) {
+        constexpr int per_axis = 4;
+        int inside = 0, total = 0;
+        for (int z = 0; z < (dim_ == 3 ? per_axis : 1); ++z)
+            for (int y = 0; y < per_axis; ++y)
+                for (int x = 0; x < per_axis; ++x, ++total)
+                    inside += domain_.inside(clo + Vec3{(x + 0.5), (y + 0.5), dim_ == 3 ? (z + 0.5) : 0.0} *
+                                                       (patch_ / per_axis));
+        cell.expected = density_ * std::pow(patch_, dim_) * inside / total;
     }
-    if (out.elements.empty())
-        throw Error(ErrorKind::domain, "the output domain " + domain.describe() + " is too small to hold one element");
-    return result;
+    const Arrangement& out = result_.arrangement;
+    for_each_earlier_neighbor(cells_, c, dim_, [&](int nb) {
+        for (int e : placed_[nb]) {
+            if (dropped_[e]) continue;
+            const Vec3& p = out.elements[e].position;
+            bool near = true;
+            for (int k = 0; k < dim_; ++k) near = near && p[k] >= clo[k] - band_ && p[k] <= clo[k] + patch_ + band_;
+            if (near) cell.band_elements.push_back(e);
+        }
+    });
+    // Probes of the cell and its band for boundary-occupancy similarity: only cells that
+    // touch the output boundary need them (elsewhere every window agrees).
+    constexpr int per_axis = 5;
+    const double step = (patch_ + 2.0 * band_) / (per_axis - 1);
+    bool touches_boundary = false;
+    for (int z = 0; z < (dim_ == 3 ? per_axis : 1); ++z)
+        for (int y = 0; y < per_axis; ++y)
+            for (int x = 0; x < per_axis; ++x) {
+                const Vec3 q = clo - Vec3{band_, band_, dim_ == 3 ? band_ : 0.0} +
+                               Vec3{x * step, y * step, dim_ == 3 ? z * step : 0.0};
+                cell.probes.push_back(q);
+                touches_boundary = touches_boundary || !domain_.inside(q);
+            }
+    if (!touches_boundary) cell.probes.clear();
+    return cell;
+}
+
+Vec3 PatchCopier::random_centre(const CellContext& cell, int j) const {
+    Vec3 origin = in_box_.lo;
+    for (int k = 0; k < dim_; ++k) {
+        const double span = (in_box_.hi[k] - in_box_.lo[k]) - window_size_[k];
+        origin[k] += span > 0.0 ? span * rng_.uniform(static_cast<std::uint64_t>(cell.cell) * 64 * 3 + j * 3 + k) : 0.0;
+        // With floor constraints the exemplar's sides are physical (a floor, walls): a
+        // cell on a side of the output's bounds takes its window flush with the same
+        // side of the exemplar, so boundary layers line up. (Without them the exemplar
+        // is a window cut from a larger pattern and any window is as good.)
+        if (params_.field.active() || !params_.floor_constraints) continue;
+        if (cell.lo[k] <= out_box_.lo[k]) {
+            origin[k] = in_box_.lo[k];
+        } else if (cell.lo[k] + patch_ >= out_box_.hi[k]) {
+            const double flush = in_box_.hi[k] - (out_box_.hi[k] - cell.lo[k]);
+            if (flush >= in_box_.lo[k]) origin[k] = flush;
+        }
+    }
+    return origin + window_half_;
+}
+
+// The candidate windows of a cell: first the continuations of its placed neighbours'
+// windows (the exemplar region next to the one a neighbour copied, where it fits in the
+// exemplar: a seam there is no seam at all, which keeps lattices and rows in phase and
+// random patterns' statistics intact), then `tries` random windows.
+std::vector<Vec3> PatchCopier::candidate_centres(const CellContext& cell, int tries) const {
+    std::vector<Vec3> centres;
+    if (!params_.field.active() && !layer_.any)
+        for_each_earlier_neighbor(cells_, cell.cell, dim_, [&](int nb) {
+            if (!has_chosen_[nb]) return;
+            const Vec3 centre = chosen_[nb] + (cell.lo - cells_.cell_lo(nb));
+            bool fits = true;
+            for (int k = 0; k < dim_; ++k)
+                fits = fits && centre[k] - window_half_[k] >= in_box_.lo[k] - 1e-9 &&
+                       centre[k] + window_half_[k] <= in_box_.hi[k] + 1e-9;
+            if (fits) centres.push_back(centre);
+        });
+    for (int j = 0; j < tries; ++j) centres.push_back(random_centre(cell, j));
+    return centres;
+}
+
+// How badly a window agrees with what is placed around the cell (lower is better).
+double PatchCopier::score(const PatchMap& map, const CellContext& cell) {
+    const Arrangement& out = result_.arrangement;
+    const double cap2 = params_.cap2;
+    const Vec3& clo = cell.lo;
+    double score = 0.0;
+    // Placed output elements should find an input element of their type where they sit.
+    for (int e : cell.band_elements) {
+        const Vec3 q = map.to_input(out.elements[e].position);
+        const int type = out.elements[e].type;
+        const int hit = in_grid_.nearest(q, params_.spacing, [&](int i) { return ex_.elements[i].type == type; });
+        score += hit >= 0 ? std::min(cap2, squared_norm(in_centers_[hit] - q)) : cap2;
+    }
+    // Input elements that would land in already placed cells should find a placed element.
+    in_grid_.for_each_within(map.in_center, window_reach_ + band_ * std::sqrt(static_cast<double>(dim_)), [&](int i, double) {
+        const Vec3 q = map.to_output(in_centers_[i]);
+        bool in_band = true, in_cell = true;
+        for (int k = 0; k < dim_; ++k) {
+            in_band = in_band && q[k] >= clo[k] - band_ && q[k] <= clo[k] + patch_ + band_;
+            in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch_;
+        }
+        if (!in_band || in_cell) return;
+        const int placed_cell = cells_.index_of(q, dim_);
+        if (placed_cell < 0 || placed_cell >= cell.cell) return;  // lands outside, or on a cell not placed yet
+        double d2 = cap2;
+        for (int e : cell.band_elements)
+            if (out.elements[e].type == ex_.elements[i].type) d2 = std::min(d2, squared_norm(out.elements[e].position - q));
+        score += d2;
+    });
+    // Section 4.1: prefer input patches whose boundary occupancy resembles the output's
+    // here (a probe inside one domain but outside the other costs like a missing element).
+    for (const Vec3& q : cell.probes)
+        if (domain_.inside(q) != ex_.domain.inside(map.to_input(q))) score += cap2;
+    if (balance_count_) {
+        window_elements_in_cell(map, clo, window_);
+        std::fill(window_counts_.begin(), window_counts_.end(), 0);
+        for (int i : window_) ++window_counts_[ex_.elements[i].type];
+        for (int t = 0; t < types_; ++t) {
+            const double straying = static_cast<double>(placed_of_type_[t] + window_counts_[t]) -
+                                    share_[t] * (expected_so_far_ + cell.expected);
+            score += cap2 * std::max(0.0, std::abs(straying) - std::max(1.0, share_[t] * cell.expected));
+        }
+    }
+    return score;
+}
+
+// Registration of a window onto the band (translation only, a few closest-point steps):
+// a random window of a lattice or of rows is rarely in phase with what is placed; shifted
+// by the mean offset between the placed elements and their nearest window elements of the
+// same type, it is. Kept when it scores better.
+void PatchCopier::register_window(PatchMap& map, const CellContext& cell, double& best_score) {
+    const Arrangement& out = result_.arrangement;
+    PatchMap trial = map;
+    for (int step = 0; step < kRegistrationSteps; ++step) {
+        Vec3 shift;
+        int matched = 0;
+        for (int e : cell.band_elements) {
+            const Vec3 q = trial.to_input(out.elements[e].position);
+            const int type = out.elements[e].type;
+            const int hit = in_grid_.nearest(q, 0.5 * params_.spacing, [&](int i) { return ex_.elements[i].type == type; });
+            if (hit < 0) continue;
+            shift += in_centers_[hit] - q;
+            ++matched;
+        }
+        if (matched < 3) return;
+        trial.in_center += shift * (1.0 / matched);
+        for (int k = 0; k < dim_; ++k)  // the window stays inside the exemplar
+            trial.in_center[k] = std::clamp(trial.in_center[k], in_box_.lo[k] + window_half_[k],
+                                            std::max(in_box_.lo[k] + window_half_[k], in_box_.hi[k] - window_half_[k]));
+    }
+    const double registered = score(trial, cell);
+    if (registered < best_score) best_score = registered, map = trial;
+}
+
+// The exemplar elements (ascending) whose centroids lie in the window (a box, not the
+// ball around it) and land in the cell and the domain: what a window puts in a cell.
+void PatchCopier::window_elements_in_cell(const PatchMap& m, const Vec3& clo, std::vector<int>& elements) const {
+    elements.clear();
+    in_grid_.for_each_within(m.in_center, window_reach_ + 1e-12, [&](int i, double) {
+        bool in_window = true;
+        for (int k = 0; k < dim_; ++k)
+            in_window = in_window && std::abs(in_centers_[i][k] - m.in_center[k]) <= window_half_[k] + 1e-12;
+        if (!in_window) return;
+        const Vec3 q = m.to_output(in_centers_[i]);
+        bool in_cell = true;
+        for (int k = 0; k < dim_; ++k) in_cell = in_cell && q[k] >= clo[k] && q[k] < clo[k] + patch_;
+        if (in_cell && domain_.inside(q)) elements.push_back(i);
+    });
+    std::sort(elements.begin(), elements.end());
+}
+
+// How far type t is below its share of the count over the cells done so far (relative;
+// negative above it).
+double PatchCopier::deficit(int t, double expected) const {
+    const double want = share_[t] * expected;
+    return (want - static_cast<double>(placed_of_type_[t])) / std::max(1.0, want);
+}
+
+// Copies the whole elements whose centroid lies in the chosen window (and in the domain).
+// A seam conflict (an element closer to a placed one than their duplicate distance) keeps
+// the element of the type that is further below its count: the placed ones go when every
+// one of them is of a type better served, the new one is not copied otherwise. Without
+// this, large elements lose every conflict with the small ones around them (two-class
+// outputs kept two thirds of their stones) and the hole filling cannot put them back where
+// only small ones fit.
+void PatchCopier::copy(const PatchMap& map, const CellContext& cell) {
+    Arrangement& out = result_.arrangement;
+    const double expected = expected_so_far_ + cell.expected;
+    window_elements_in_cell(map, cell.lo, window_);
+    std::vector<int> conflicts;
+    for (int i : window_) {
+        const Vec3 q = map.to_output(in_centers_[i]);
+        const Element& src = ex_.elements[i];
+        conflicts.clear();
+        for_each_earlier_neighbor(cells_, cell.cell, dim_, [&](int nb) {
+            for (int e : placed_[nb]) {
+                const double gap = min_gap_[src.type * types_ + out.elements[e].type];
+                if (!dropped_[e] && gap > 0.0 && squared_norm(out.elements[e].position - q) < gap * gap)
+                    conflicts.push_back(e);
+            }
+        });
+        bool replace = !conflicts.empty() && balance_count_;
+        for (int e : conflicts) replace = replace && deficit(out.elements[e].type, expected) < deficit(src.type, expected);
+        if (!conflicts.empty() && !replace) continue;
+        for (int e : conflicts) dropped_[e] = 1, --placed_of_type_[out.elements[e].type];
+        const int index_out = append_copy(result_.provenance(), ex_, i, map.rotation,
+                                          map.out_center - map.rotation.rotate(map.in_center), dim_);
+        dropped_.push_back(0);
+        const int placed_cell = cells_.index_of(out.elements.back().position, dim_);
+        placed_[placed_cell >= 0 ? placed_cell : cell.cell].push_back(index_out);
+        ++placed_of_type_[src.type];
+    }
+    chosen_[cell.cell] = map.in_center;
+    has_chosen_[cell.cell] = 1;
+    expected_so_far_ += cell.expected;
+}
+
+InitResult PatchCopier::run() {
+    prepare();
+    const Vec3 half = Vec3{patch_, patch_, dim_ == 3 ? patch_ : 0.0} * 0.5;
+    for (int c = 0; c < cells_.count(); ++c) {
+        const CellContext cell = context_of(c);
+        PatchMap map;
+        map.out_center = cell.lo + half;
+        map.rotation = params_.field.frame(map.out_center, dim_);
+        if (layer_.any) map.out_center = onto_layer(map.out_center, map.rotation, layer_, in_box_, domain_, patch_, dim_);
+        // Choose among the candidate windows the one most consistent with the band; the
+        // best random one may improve by registration.
+        const bool free_choice = cell.band_elements.empty() && cell.probes.empty() && !balance_count_;
+        const std::vector<Vec3> centres = candidate_centres(cell, free_choice ? 1 : options_.patch_candidates);
+        const int continuations = static_cast<int>(centres.size()) - (free_choice ? 1 : options_.patch_candidates);
+        double best_score = INFINITY, best_random = INFINITY;
+        PatchMap best = map, random_best = map;
+        for (size_t j = 0; j < centres.size(); ++j) {
+            map.in_center = centres[j];
+            const double s = score(map, cell);
+            if (s < best_score) best_score = s, best = map;
+            if (static_cast<int>(j) >= continuations && s < best_random) best_random = s, random_best = map;
+        }
+        if (!cell.band_elements.empty() && best_random < INFINITY) {
+            register_window(random_best, cell, best_random);
+            if (best_random < best_score) best_score = best_random, best = random_best;
+        }
+        copy(best, cell);
+    }
+    std::vector<char> keep(dropped_.size());
+    for (size_t e = 0; e < keep.size(); ++e) keep[e] = !dropped_[e];
+    keep_only(result_.provenance(), keep);
+    if (result_.arrangement.elements.empty())
+        throw Error(ErrorKind::domain, "the output domain " + domain_.describe() + " is too small to hold one element");
+    return std::move(result_);
+}
+
+}  // namespace
+
+InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*index*/, const Domain& domain,
+                              const Params& params, const DetOptions& options) {
+    return PatchCopier(exemplar, domain, params, options).run();
 }
 
 }  // namespace tessera::det

@@ -7,7 +7,9 @@
 // aligned across seams.
 #pragma once
 
+#include "core/crowding_repair.hpp"
 #include "det/model.hpp"
+#include "det/provenance.hpp"
 
 namespace tessera::det {
 
@@ -17,31 +19,27 @@ struct InitResult {
     std::vector<int> source_element;   // per output element: the input element it was copied from
     double patch_size = 0.0;
     double structure_range = 0.0;      // the exemplar's correlation range, when the default patch used it
-    int filled = 0;                    // elements added by fill_holes
+    int filled = 0;                    // elements added by fill_vacancies
     int thinned = 0;                   // elements removed by thin_crowds
+    Provenance provenance() { return {arrangement, source_sample, source_element}; }
 };
 
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
                               const Params& params, const DetOptions& options);
 
-// Element positions (centroids), z = 0 in 2D: the points of the grids over elements.
-std::vector<Vec3> element_centroids(const std::vector<Element>& elements, int dimension);
-
-// Appends a copy of exemplar element `source` moved by p -> rotation p + shift
-// (recording its source samples and element); returns the new element's index.
-int append_copy(InitResult& init, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,
-                int dimension);
-
-// Adds copies of exemplar elements at the emptiest places of the domain until the
-// output holds the exemplar's density (or no gap wider than half a spacing is left).
-// Returns how many were added.
-int fill_holes(InitResult& init, const Exemplar& exemplar, const Domain& domain, const Params& params,
-               std::uint64_t seed);
-
 // Removes the most crowded elements (nearest neighbour closest relative to the exemplar's
 // typical distance for that pair of types) of every type that holds more than its
 // exemplar density asks for, until the counts are met (src/det/thin_crowds.cpp).
 // Returns how many were removed; renumbers ids 0..n-1.
-int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain, const Params& params);
+// With hole_radius > 0, an element whose removal would leave an empty ball larger than it
+// stays. `crowded_below`: the crowding (1 = the exemplar's close distance) from which an
+// element is no longer removed. Types are thinned down to (1 + allowance) times their count.
+int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
+                double hole_radius = 0.0, double crowded_below = 1.0, double allowance = 0.0);
+
+// Removes elements the crowding repair could not separate (core::crowded_pairs after it),
+// of types above their count, the later of each pair first. Returns how many.
+int remove_unresolved_crowding(Provenance of, const Domain& domain, const Params& params,
+                               const core::NearestDistanceTails& tails, const core::CrowdingRepairOptions& options);
 
 }  // namespace tessera::det

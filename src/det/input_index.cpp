@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/parallel.hpp"
+#include "det/density.hpp"
 #include "det/matching.hpp"
 #include "tessera/error.hpp"
 
@@ -50,6 +51,7 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
         p.spacing = std::pow(exemplar.domain.measure() / std::max<size_t>(1, exemplar.elements.size()),
                              1.0 / exemplar.dimension);
     }
+    p.type_density = exemplar_type_density(exemplar, p.spacing);
     p.radius = options.radius > 0.0 ? options.radius : default_radius_factor(exemplar.dimension) * p.spacing;
     // A neighbour displaced by a whole spacing from its prediction is as good as
     // unmatched: pair costs are truncated there (robust to boundary and density

@@ -19,6 +19,7 @@ struct Params {
     double radius = 0.0;       // neighbourhood radius r
     double input_radius = 0.0; // extent of input neighbourhoods: r + cap (the paper's "infinite" n(s_i))
     double spacing = 0.0;      // mean nearest-neighbour distance between exemplar elements
+    std::vector<double> type_density;  // per type: the exemplar's density where its elements are (det/density.hpp)
     double cap2 = 0.0;         // cost of an unmatched output neighbour; pairs costlier than this are not made
     double alpha = 0.0;        // weight of the attribute term of Eq. 1
     double lambda = 0.0;       // weight of the occupancy term of Eq. 6

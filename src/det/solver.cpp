@@ -11,6 +11,8 @@
 #include "det/floor.hpp"
 #include "det/init.hpp"
 #include "det/input_index.hpp"
+#include "det/type_exchange.hpp"
+#include "det/vacancies.hpp"
 #include "det/search.hpp"
 #include "tessera/det.hpp"
 #include "tessera/error.hpp"
@@ -24,6 +26,14 @@ using core::Clock;
 using core::report;
 using core::seconds_since;
 
+// Holes up to this many times the exemplar's largest are left alone: a larger output shows
+// a slightly larger largest hole by chance alone.
+constexpr double kHoleTolerance = 1.2;
+// Holes this many times the exemplar's largest are filled whatever the counts.
+constexpr double kHoleBound = 1.3;
+// Holes filled during the iterations may take a type this far over its count.
+constexpr double kCountAllowance = 0.01;
+
 // Floor elements keep their elevation (section 5): the crowding repair moves them level only.
 void hold_floor_levels(core::CrowdingRepairOptions& repair, const Arrangement& out, const Domain& domain,
                        const det::Params& params) {
@@ -32,6 +42,27 @@ void hold_floor_levels(core::CrowdingRepairOptions& repair, const Arrangement& o
     repair.held_level = det::floor_elements(out, domain, params.gravity, params.floor_distance, params.boundary);
     for (char& held : repair.held_level) held &= det::floor_bit;
     repair.level_axis = params.gravity.vector();
+}
+
+// The sub-steps that keep the output's holes and close pairs within the exemplar's:
+// vacancies filled, types over their count thinned where crowded, pairs pushed apart.
+core::CrowdingRepairReport keep_bounds(det::OutputState& state, const Exemplar& exemplar, const Domain& domain,
+                                       const det::Params& params, const core::NearestDistanceTails& tails,
+                                       core::CrowdingRepairOptions& repair, det::VacancySettings vacancies, int round) {
+    det::Provenance provenance{state.arrangement, state.match, state.source_element};
+    state.arrangement.update_positions();
+    vacancies.reach_count = false;
+    vacancies.round = static_cast<std::uint64_t>(round);
+    int added = det::fill_vacancies(provenance, exemplar, domain, params, tails, vacancies).added;
+    // What the filled holes add beyond 1% over the counts is taken back where elements crowd
+    // most, if that opens no hole (the counts are estimates: a lattice may hold a few more).
+    if (added > 0) added -= det::thin_crowds(provenance, exemplar, domain, params, vacancies.hole_radius, INFINITY, kCountAllowance);
+    hold_floor_levels(repair, state.arrangement, domain, params);
+    core::CrowdingRepairReport fixed = core::repair_crowding(state.arrangement, domain, tails, repair);
+    const int removed = fixed.remaining > 0 ? det::remove_unresolved_crowding(provenance, domain, params, tails, repair) : 0;
+    if (removed > 0) fixed.remaining = static_cast<int>(core::crowded_pairs(state.arrangement, tails, repair).size());
+    if (added > 0 || removed > 0) state.key = det::sample_keys(state.arrangement);
+    return fixed;
 }
 
 }  // namespace
@@ -50,8 +81,22 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     const det::InputIndex index = det::build_input_index(
         exemplar, params, options.search == SearchMode::kcoherence ? options.k : 0, threads);
     det::InitResult init = det::initialize_patches(exemplar, index, domain, params, options);
-    init.thinned = det::thin_crowds(init, exemplar, domain, params);
-    init.filled = det::fill_holes(init, exemplar, domain, params, options.seed);
+    // The exemplar's close-distance tails bound the output's (core/crowding_repair.hpp), and
+    // its largest hole the output's (det/vacancies.hpp).
+    const core::NearestDistanceTails tails(exemplar);
+    const double hole_radius = kHoleTolerance * det::exemplar_hole_radius(exemplar, params.spacing);
+    init.thinned = det::thin_crowds(init.provenance(), exemplar, domain, params);
+    det::VacancySettings vacancies;
+    vacancies.hole_radius = hole_radius;
+    vacancies.count_allowance = kCountAllowance;
+    vacancies.must_fill_radius = hole_radius * kHoleBound / kHoleTolerance;
+    vacancies.reach_count = true;
+    vacancies.seed = options.seed;
+    init.filled = det::fill_vacancies(init.provenance(), exemplar, domain, params, tails, vacancies).added;
+    if (det::exchange_types(init.provenance(), exemplar, domain, params, tails, options.seed) > 0) {
+        vacancies.round = 1;
+        init.filled += det::fill_vacancies(init.provenance(), exemplar, domain, params, tails, vacancies).added;
+    }
 
     det::OutputState state;
     state.arrangement = std::move(init.arrangement);
@@ -59,7 +104,8 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     state.match = std::move(init.source_sample);
     state.source_element = std::move(init.source_element);
     state.type_target.assign(state.arrangement.types.size(), 0);
-    for (const Element& e : state.arrangement.elements) ++state.type_target[e.type];
+    for (size_t t = 0; t < state.type_target.size(); ++t)
+        state.type_target[t] = static_cast<int>(std::lround(params.type_density[t] * domain.measure()));
 
     RunStats& stats = state.arrangement.stats;
     stats.method = "det";
@@ -75,9 +121,8 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         stats.notes.push_back(note);
     }
 
-    // The exemplar's close-distance tails bound the output's (core/crowding_repair.hpp): a
-    // separation sub-step after every iteration, like the interleaved physics of section 5.
-    const core::NearestDistanceTails tails(exemplar);
+    // Both bounds are kept after every iteration by sub-steps, like the interleaved physics of
+    // section 5: pairs closer than the exemplar allows are pushed apart, holes filled.
     core::CrowdingRepairOptions repair;
     repair.threads = threads;
     const det::SearchSettings search{options.search, threads};
@@ -101,14 +146,13 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
             }
             step_physics(state.arrangement, domain, physics);
         }
-        hold_floor_levels(repair, state.arrangement, domain, params);
-        core::repair_crowding(state.arrangement, domain, tails, repair);
+        keep_bounds(state, exemplar, domain, params, tails, repair, vacancies, it + 1);
         report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
     }
     det::keep_inside_domain(state.arrangement, domain, params.dimension);
     {
-        hold_floor_levels(repair, state.arrangement, domain, params);
-        const core::CrowdingRepairReport fixed = core::repair_crowding(state.arrangement, domain, tails, repair);
+        const core::CrowdingRepairReport fixed =
+            keep_bounds(state, exemplar, domain, params, tails, repair, vacancies, options.iterations + 1);
         if (fixed.bound_hit)
             stats.notes.push_back("crowding repair: " + std::to_string(fixed.remaining) +
                                   " elements are still closer to a neighbour than the exemplar allows after " +

@@ -2,8 +2,8 @@
 // copy can hold more elements than the exemplar's density asks for (up to 5-10% more on
 // the real datasets of the shared data). Such seam pairs also break the exemplar's
 // inhibition distance, which shows in the output's pair correlation at short range.
-// While a type holds more than its count (its exemplar density times the output's
-// measure), its most crowded element is removed if it is crowded at all (fill_holes then
+// While a type holds more than its count (its exemplar density where the elements are,
+// det/density.hpp, times the output's measure), its most crowded element is removed if it is crowded at all (fill_holes then
 // adds what the types below their counts lack): crowding =
 // min over neighbours j of d_ij / (the distance from an element of type(i) to its nearest
 // of type(j) that only one in ten exemplar elements undercuts). Elements at the
@@ -58,46 +58,17 @@ std::vector<double> close_distance(const Exemplar& exemplar, int dimension, doub
     return result;
 }
 
-// Keeps the elements with keep[e] (and their samples, source maps), renumbering ids 0..n-1.
-void keep_only(InitResult& init, const std::vector<char>& keep) {
-    Arrangement& out = init.arrangement;
-    std::vector<Element> elements;
-    std::vector<Sample> samples;
-    std::vector<int> source_sample, source_element;
-    for (size_t e = 0; e < out.elements.size(); ++e) {
-        if (!keep[e]) continue;
-        Element element = out.elements[e];
-        const int index = static_cast<int>(elements.size());
-        element.first_sample = static_cast<int>(samples.size());
-        element.id = static_cast<std::uint64_t>(index);
-        for (int s = 0; s < element.sample_count; ++s) {
-            const int old = out.elements[e].first_sample + s;
-            Sample smp = out.samples[old];
-            smp.element = index;
-            samples.push_back(smp);
-            source_sample.push_back(init.source_sample[old]);
-        }
-        source_element.push_back(init.source_element[e]);
-        elements.push_back(std::move(element));
-    }
-    out.elements = std::move(elements);
-    out.samples = std::move(samples);
-    init.source_sample = std::move(source_sample);
-    init.source_element = std::move(source_element);
-}
-
 }  // namespace
 
-int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain, const Params& params) {
-    Arrangement& out = init.arrangement;
+int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
+                double hole_radius, double crowded_below, double allowance) {
+    Arrangement& out = of.out;
     const int dim = params.dimension;
     const int types = static_cast<int>(exemplar.types.size());
-    const double ratio = domain.measure() / exemplar.domain.measure();
-    if (!(ratio > 0.0) || !std::isfinite(ratio) || !(params.spacing > 0.0)) return 0;
+    if (!(params.spacing > 0.0)) return 0;
 
     std::vector<long> count(types, 0), target(types, 0);
-    for (const Element& e : exemplar.elements) ++target[e.type];
-    for (long& t : target) t = std::lround(static_cast<double>(t) * ratio);
+    for (int t = 0; t < types; ++t) target[t] = std::lround(params.type_density[t] * domain.measure() * (1.0 + allowance));
     for (const Element& e : out.elements) ++count[e.type];
     bool any_over = false;
     for (int t = 0; t < types; ++t) any_over = any_over || count[t] > target[t];
@@ -120,8 +91,34 @@ int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain
         return score;
     };
 
+    // The hole an element leaves: the largest clearance among the elements kept, found by a
+    // pattern search from its place (the hole's centre need not be the element's).
+    auto clearance_without = [&](int i, const Vec3& c) {
+        double clearance = std::min(reach, domain.distance_to_boundary(c));
+        grid.for_each_within(c, reach, [&](int j, double d2) {
+            if (j != i && keep[j]) clearance = std::min(clearance, std::sqrt(d2) - out.elements[j].radius);
+        });
+        return clearance;
+    };
+    auto hole_left = [&](int i) {
+        Vec3 c = p[i];
+        double best = clearance_without(i, c);
+        for (double h = 0.25 * params.spacing; h > params.spacing / 64.0; h *= 0.5)
+            for (bool moved = true; moved;) {
+                moved = false;
+                for (int k = 0; k < dim; ++k)
+                    for (double sign : {-1.0, 1.0}) {
+                        Vec3 q = c;
+                        q[k] += sign * h;
+                        const double d = clearance_without(i, q);
+                        if (d > best + 1e-12) best = d, c = q, moved = true;
+                    }
+            }
+        return best;
+    };
+
     // (crowding, -index): most crowded first; of a crowded pair the later copy (the seam
-    // newcomer) goes. Runs before fill_holes, so every element here is a patch copy.
+    // newcomer, or the later insertion) goes.
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
     for (size_t i = 0; i < out.elements.size(); ++i) {
@@ -131,7 +128,7 @@ int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain
     int removed = 0;
     while (!heap.empty()) {  // bounded: every element leaves the heap at most once per re-rank
         const auto [score, negative_index] = heap.top();
-        if (score >= 1.0) break;  // nobody closer than the exemplar's close distance is left
+        if (score >= crowded_below) break;  // nobody crowded enough is left
         heap.pop();
         const int i = -negative_index;
         const int t = out.elements[i].type;
@@ -141,11 +138,35 @@ int thin_crowds(InitResult& init, const Exemplar& exemplar, const Domain& domain
             heap.emplace(fresh, -i);
             continue;
         }
+        if (hole_radius > 0.0 && hole_left(i) > hole_radius) continue;  // it would leave a hole
         keep[i] = 0;
         --count[t];
         ++removed;
     }
-    if (removed > 0) keep_only(init, keep);
+    if (removed > 0) keep_only(of, keep);
+    return removed;
+}
+
+int remove_unresolved_crowding(Provenance of, const Domain& domain, const Params& params,
+                               const core::NearestDistanceTails& tails, const core::CrowdingRepairOptions& options) {
+    const std::vector<core::CrowdedPair> crowded = core::crowded_pairs(of.out, tails, options);
+    if (crowded.empty()) return 0;
+    const int types = static_cast<int>(of.out.types.size());
+    std::vector<long> count(types, 0), target(types, 0);
+    for (int t = 0; t < types; ++t) target[t] = std::lround(params.type_density[t] * domain.measure());
+    for (const Element& e : of.out.elements) ++count[e.type];
+    std::vector<char> keep(of.out.elements.size(), 1);
+    int removed = 0;
+    // The later element of a pair goes (a newer copy or insertion), its partner stays.
+    for (auto it = crowded.rbegin(); it != crowded.rend(); ++it) {
+        const int e = std::max(it->element, it->neighbour), other = std::min(it->element, it->neighbour);
+        const int t = of.out.elements[e].type;
+        if (!keep[e] || !keep[other] || count[t] <= target[t] || of.out.elements[e].locked) continue;
+        keep[e] = 0;
+        --count[t];
+        ++removed;
+    }
+    if (removed > 0) keep_only(of, keep);
     return removed;
 }
 

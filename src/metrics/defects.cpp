@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/empty_space.hpp"
 #include "core/nearest_by_type.hpp"
 #include "core/parallel.hpp"
 #include "core/spatial_grid.hpp"
@@ -85,78 +86,19 @@ std::vector<CrowdingPair> crowding(const Exemplar& exemplar, const Exemplar& out
 
 EmptyCircle largest_empty_circle(const Exemplar& data) {
     metrics::check_points(data, "largest empty circle");
-    const int dim = data.dimension;
     std::vector<Vec3> p;
     std::vector<double> rim;  // per sample: the radius of its element
     for (const Sample& s : data.samples) {
         Vec3 q = s.p;
-        if (dim == 2) q.z = 0.0;
+        if (data.dimension == 2) q.z = 0.0;
         p.push_back(q);
         rim.push_back(data.elements[s.element].radius);
     }
-    EmptyCircle best;
-    if (p.empty()) return best;
-    const double spacing = metrics::typical_spacing(p, dim);
-    core::SpatialGrid grid;
-    grid.build(p, metrics::grid_cell(p, spacing), dim);
-    double max_rim = 0.0;
-    for (double r : rim) max_rim = std::max(max_rim, r);
-    const Box box = data.domain.bounds();
-    const double diagonal = norm(box.size()) + 1e-300;
-    // Clearance of a ball centred at c: to the nearest sample's rim and to the boundary.
-    const auto clearance = [&](const Vec3& c) {
-        const double wall = data.domain.distance_to_boundary(c);
-        if (!(wall > 0.0)) return -kInf;
-        double d = wall;
-        // The nearest centre within wall + max_rim decides (a farther rim is beyond the wall).
-        grid.for_each_within(c, wall + max_rim, [&](int i, double d2) { d = std::min(d, std::sqrt(d2) - rim[i]); });
-        return d;
-    };
-    // A lattice of candidate centres (a fifth of the spacing in 2D, a third in 3D), then
-    // a pattern search from the best few: the result is within a few percent of the exact one.
-    const double step = spacing / (dim == 2 ? 5.0 : 3.0);
-    int n[3] = {1, 1, 1};
-    for (int k = 0; k < dim; ++k) n[k] = std::max(1, static_cast<int>(std::ceil(box.size()[k] / step)));
-    const long cells = static_cast<long>(n[0]) * n[1] * n[2];
-    if (cells > 200000000L) throw Error(ErrorKind::input, "largest empty circle: the domain is too large for its elements");
-    // Per thread the best lattice point, ties to the lowest index: the same for any thread count.
-    struct Best {
-        double radius = 0.0;
-        long index = -1;
-    };
-    const auto centre = [&](long i) {
-        const long row = i / n[0];
-        return box.lo + Vec3{(i % n[0] + 0.5) * step, (row % n[1] + 0.5) * step, dim == 3 ? (row / n[1] + 0.5) * step : 0.0};
-    };
-    const int threads = core::resolve_threads(0);
-    std::vector<Best> per_thread(threads);
-    core::parallel_for(n[2] * n[1], threads, [&](int begin, int end, int t) {
-        for (long i = static_cast<long>(begin) * n[0]; i < static_cast<long>(end) * n[0]; ++i) {
-            const double d = clearance(centre(i));
-            if (d > per_thread[t].radius) per_thread[t] = {d, i};
-        }
-    });
-    Best top;
-    for (const Best& b : per_thread)
-        if (b.radius > top.radius || (b.radius == top.radius && b.index >= 0 && b.index < top.index)) top = b;
-    if (top.index < 0) return best;
-    best = {top.radius, centre(top.index)};
-    // Pattern search: move the centre by a shrinking step while the clearance grows.
-    for (double h = step; h > step * 1e-3; h *= 0.5) {
-        bool moved = true;
-        for (int guard = 0; moved && guard < 64; ++guard) {
-            moved = false;
-            for (int k = 0; k < dim; ++k)
-                for (double sign : {-1.0, 1.0}) {
-                    Vec3 c = best.center;
-                    c[k] += sign * h;
-                    const double d = clearance(c);
-                    if (d > best.radius) best = {d, c}, moved = true;
-                }
-        }
-    }
-    best.radius = std::min(best.radius, diagonal);
-    return best;
+    if (p.empty()) return {};
+    // A lattice of a fifth of the typical spacing in 2D, a third in 3D, refined by a pattern search.
+    const double step = metrics::typical_spacing(p, data.dimension) / (data.dimension == 2 ? 5.0 : 3.0);
+    const core::EmptyBall ball = core::largest_empty_ball(p, rim, data.domain, data.dimension, step, 0);
+    return {ball.radius, ball.center};
 }
 
 std::vector<ShapeStats> shape_statistics(const Exemplar& exemplar, const Exemplar& output) {

@@ -1,0 +1,121 @@
+#include "det/type_exchange.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "core/empty_space.hpp"
+#include "core/rng.hpp"
+#include "core/spatial_grid.hpp"
+#include "det/vacancies.hpp"
+
+namespace tessera::det {
+
+namespace {
+
+// A count is met within max(1, 1%).
+long slack_of(long target) { return std::max<long>(1, std::lround(0.01 * static_cast<double>(target))); }
+
+}  // namespace
+
+int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
+                   const core::NearestDistanceTails& tails, std::uint64_t seed) {
+    Arrangement& out = of.out;
+    const int types = static_cast<int>(exemplar.types.size());
+    const int dim = params.dimension;
+    if (types < 2 || !(params.spacing > 0.0)) return 0;
+    std::vector<long> count(types, 0), target(types, 0);
+    for (int t = 0; t < types; ++t) target[t] = std::lround(params.type_density[t] * domain.measure());
+    for (const Element& e : out.elements) ++count[e.type];
+    std::vector<char> over(types, 0);
+    bool any_over = false, any_under = false;
+    for (int t = 0; t < types; ++t) {
+        over[t] = count[t] > target[t];
+        any_over = any_over || over[t];
+        any_under = any_under || count[t] < target[t] - slack_of(target[t]);
+    }
+    if (!any_over || !any_under) return 0;
+
+    // Room is measured among the elements of types not over their count; the others are
+    // what an exchange may take out.
+    core::ObstacleGrid room(domain.bounds(), params.spacing, dim);
+    for (const Sample& s : out.samples) {
+        const Element& e = out.elements[s.element];
+        if (!over[e.type] || e.locked) room.add(s.p, e.radius, e.type);
+    }
+    const std::vector<Vec3> centroids = element_centroids(out.elements, dim);
+    core::SpatialGrid removable;
+    removable.build(centroids, params.spacing, dim);
+    std::vector<char> removed(out.elements.size(), 0);
+    double reach = 0.0;
+    for (int a = 0; a < types; ++a)
+        for (int b = 0; b < types; ++b) reach = std::max(reach, tails.hard_core(a, b));
+
+    const std::vector<Vec3> candidates = vacancy_candidates(domain, dim, params.spacing);
+    const double cap = 4.0 * params.spacing;
+    std::priority_queue<std::pair<double, int>> heap;  // (room, -index)
+    for (size_t i = 0; i < candidates.size(); ++i)
+        heap.emplace(std::min(cap, core::ball_clearance(room, domain, candidates[i])), -static_cast<int>(i));
+    std::vector<std::vector<int>> of_type(types);
+    for (size_t i = 0; i < exemplar.elements.size(); ++i) of_type[exemplar.elements[i].type].push_back(static_cast<int>(i));
+    const core::KeyedRng rng(seed, core::Purpose::jitter, 0x7e);
+    std::vector<double> nearest;
+    std::vector<int> victims;
+    int exchanged = 0;
+    const long bound = static_cast<long>(out.elements.size());
+    while (!heap.empty() && exchanged < bound) {
+        // The type furthest below its count.
+        int type = -1;
+        double worst = 0.0;
+        for (int t = 0; t < types; ++t) {
+            const double d = static_cast<double>(target[t] - count[t] - slack_of(target[t])) / std::max<long>(1, target[t]);
+            if (d > worst && !of_type[t].empty()) worst = d, type = t;
+        }
+        if (type < 0) break;
+        const auto [ranked, negative] = heap.top();
+        heap.pop();
+        const Vec3& c = candidates[-negative];
+        const double fresh = std::min(cap, core::ball_clearance(room, domain, c));
+        if (fresh < ranked) {
+            heap.emplace(fresh, negative);
+            continue;
+        }
+        // The hard core towards the elements that stay must hold.
+        room.nearest_by_tag(c, types, cap, nearest);
+        bool fits = true;
+        for (int b = 0; b < types; ++b) fits = fits && nearest[b] >= tails.hard_core(type, b);
+        if (!fits) continue;
+        // The over-count elements inside the hard core go, while their types stay at their counts.
+        victims.clear();
+        removable.for_each_within(c, reach, [&](int e, double d2) {
+            const int b = out.elements[e].type;
+            if (!removed[e] && over[b] && !out.elements[e].locked && std::sqrt(d2) < tails.hard_core(type, b))
+                victims.push_back(e);
+        });
+        std::vector<long> after = count;
+        for (int e : victims) --after[out.elements[e].type];
+        bool keeps = true;
+        for (int b = 0; b < types; ++b) keeps = keeps && (after[b] >= target[b] || after[b] == count[b]);
+        if (!keeps) continue;
+        const Quat frame = params.field.frame(c, dim);
+        const int source = of_type[type][rng.below(static_cast<std::uint64_t>(-negative), of_type[type].size())];
+        const Element& src = exemplar.elements[source];
+        const int index = append_copy(of, exemplar, source, frame, c - frame.rotate(src.position), dim);
+        removed.push_back(0);
+        for (int e : victims) removed[e] = 1;
+        count = after;
+        ++count[type];
+        for (int s = 0; s < src.sample_count; ++s)
+            room.add(out.samples[out.elements[index].first_sample + s].p, src.radius, type);
+        for (int t = 0; t < types; ++t) over[t] = count[t] > target[t];
+        ++exchanged;
+    }
+    if (exchanged > 0) {
+        std::vector<char> keep(removed.size());
+        for (size_t e = 0; e < keep.size(); ++e) keep[e] = !removed[e];
+        keep_only(of, keep);
+    }
+    return exchanged;
+}
+
+}  // namespace tessera::det

@@ -1,0 +1,24 @@
+// Class counts by exchange. Patch windows sample an exemplar unevenly (its margins less
+// than its middle), seams drop elements, and large elements lose more of both: a two-class
+// exemplar of stones among pebbles came out with a quarter of its stones missing and its
+// pebbles over their count. Filling holes cannot mend that: no hole among pebbles is large
+// enough for a stone. The exchange puts elements of a type below its count where the
+// elements of types *under or at* their counts leave the most room, and takes out the
+// elements of types over their count that are closer to it than the exemplar's closest
+// distance for their pair of types (the hard core), one element at a time, until the
+// type's count is reached, no type is over its count, or no place has room.
+#pragma once
+
+#include <cstdint>
+
+#include "core/crowding_repair.hpp"
+#include "det/model.hpp"
+#include "det/provenance.hpp"
+
+namespace tessera::det {
+
+// Returns how many elements were exchanged (inserted; about as many were removed).
+int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
+                   const core::NearestDistanceTails& tails, std::uint64_t seed);
+
+}  // namespace tessera::det

@@ -1,0 +1,199 @@
+#include "det/vacancies.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "core/empty_space.hpp"
+#include "core/rng.hpp"
+#include "det/layers.hpp"
+
+namespace tessera::det {
+
+namespace {
+
+// Elements inserted per call at most, as a multiple of the count target (a bound that only
+// a domain far emptier than its count can reach).
+constexpr double kInsertionBound = 1.0;
+// Exemplar elements tried at a hole before it is given up (a long element may not fit).
+constexpr int kCopiesTried = 8;
+
+}  // namespace
+
+double vacancy_step(int dim, double spacing) { return spacing / (dim == 2 ? 4.0 : 3.0); }
+
+std::vector<Vec3> vacancy_candidates(const Domain& domain, int dim, double spacing) {
+    return lattice_inside(domain, dim, vacancy_step(dim, spacing));
+}
+
+std::vector<Vec3> lattice_inside(const Domain& domain, int dim, double step) {
+    const Box box = domain.bounds();
+    int n[3] = {1, 1, 1};
+    for (int k = 0; k < dim; ++k) n[k] = std::max(1, static_cast<int>(std::floor(box.size()[k] / step)));
+    std::vector<Vec3> points;
+    for (int z = 0; z < n[2]; ++z)
+        for (int y = 0; y < n[1]; ++y)
+            for (int x = 0; x < n[0]; ++x) {
+                const Vec3 p = box.lo + Vec3{(x + 0.5) * step, (y + 0.5) * step, dim == 3 ? (z + 0.5) * step : 0.0};
+                if (domain.inside(p)) points.push_back(p);
+            }
+    return points;
+}
+
+namespace {
+
+// The centre of the hole around lattice point p: a pattern search (steps from the lattice
+// step down to a 64th of it) for the largest clearance; `depth` is set to it.
+template <class Clearance>
+Vec3 hole_centre(const Vec3& p, int dims, double step, const Clearance& clearance, double& depth) {
+    Vec3 best = p;
+    depth = clearance(p);
+    for (double h = 0.5 * step; h > step / 64.0; h *= 0.5) {
+        bool moved = true;
+        for (int guard = 0; moved && guard < 16; ++guard) {
+            moved = false;
+            for (int k = 0; k < dims; ++k)
+                for (double sign : {-1.0, 1.0}) {
+                    Vec3 q = best;
+                    q[k] += sign * h;
+                    const double d = clearance(q);
+                    if (d > depth) depth = d, best = q, moved = true;
+                }
+        }
+    }
+    return best;
+}
+
+// The type to put into a hole at c: of the types whose hard core holds against the
+// elements around c, the one furthest below its count (relative to it); when none holds,
+// the one that comes closest to holding it.
+int choose_type(const core::ObstacleGrid& grid, const core::NearestDistanceTails& tails, const Vec3& c,
+                const std::vector<long>& count, const std::vector<long>& target, double reach,
+                std::vector<double>& nearest) {
+    const int types = static_cast<int>(count.size());
+    grid.nearest_by_tag(c, types, reach, nearest);
+    int best = -1, closest = 0;
+    double best_deficit = -INFINITY, best_fit = -INFINITY;
+    for (int t = 0; t < types; ++t) {
+        if (target[t] <= 0) continue;
+        double fit = INFINITY;
+        for (int b = 0; b < types; ++b) {
+            const double core_distance = tails.hard_core(t, b);
+            if (core_distance > 0.0) fit = std::min(fit, nearest[b] / core_distance);
+        }
+        const double deficit = static_cast<double>(target[t] - count[t]) / static_cast<double>(target[t]);
+        if (fit >= 1.0 && deficit > best_deficit) best_deficit = deficit, best = t;
+        if (fit > best_fit) best_fit = fit, closest = t;
+    }
+    return best >= 0 ? best : closest;
+}
+
+}  // namespace
+
+double exemplar_hole_radius(const Exemplar& exemplar, double spacing) {
+    std::vector<Vec3> p;
+    std::vector<double> rim;
+    for (const Sample& s : exemplar.samples) {
+        Vec3 q = s.p;
+        if (exemplar.dimension == 2) q.z = 0.0;
+        p.push_back(q);
+        rim.push_back(exemplar.elements[s.element].radius);
+    }
+    if (p.empty() || !(spacing > 0.0)) return 0.0;
+    const double step = spacing / (exemplar.dimension == 2 ? 5.0 : 3.0);
+    return core::largest_empty_ball(p, rim, exemplar.domain, exemplar.dimension, step, 1).radius;
+}
+
+VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Domain& domain, const Params& params,
+                             const core::NearestDistanceTails& tails, const VacancySettings& settings) {
+    VacancyReport report;
+    Arrangement& out = into.out;
+    const int dim = params.dimension;
+    const int types = static_cast<int>(exemplar.types.size());
+    const double spacing = params.spacing;
+    if (!(spacing > 0.0) || exemplar.elements.empty()) return report;
+
+    std::vector<long> count(types, 0), target(types, 0);
+    long total_target = 0, total = static_cast<long>(out.elements.size());
+    for (int t = 0; t < types; ++t) total_target += target[t] = std::lround(params.type_density[t] * domain.measure());
+    for (const Element& e : out.elements) ++count[e.type];
+    if (settings.hole_radius <= 0.0 && !(settings.reach_count && total < total_target)) return report;
+    std::vector<std::vector<int>> of_type(types);
+    for (size_t i = 0; i < exemplar.elements.size(); ++i) of_type[exemplar.elements[i].type].push_back(static_cast<int>(i));
+
+    core::ObstacleGrid grid(domain.bounds(), spacing, dim);
+    for (const Sample& s : out.samples) grid.add(s.p, out.elements[s.element].radius, out.elements[s.element].type);
+    const bool count_fill = settings.reach_count && total < total_target;
+    // Filling holes only, a lattice with a step of hole_radius / sqrt(d) has a point within
+    // half the hole radius of every hole's centre, which the local search then finds.
+    const double step = count_fill ? vacancy_step(dim, spacing)
+                                   : std::max(vacancy_step(dim, spacing), settings.hole_radius / std::sqrt(double(dim)));
+    const double lattice_slack = 0.5 * step * std::sqrt(static_cast<double>(dim));
+    const std::vector<Vec3> candidates = lattice_inside(domain, dim, step);
+    // Holes wider than `cap` rank equal. Filling holes only, the heap needs no lattice point
+    // that cannot lie in one (the hole's centre is within lattice_slack of some point).
+    const double cap = count_fill ? 4.0 * spacing : settings.hole_radius + 2.0 * lattice_slack;
+    const double least = count_fill ? 0.0 : settings.hole_radius - lattice_slack;
+    // A layered exemplar fills a domain as thin as itself (a shell): its holes lie in the
+    // layer, and the walls of the thin axis must not bound their size.
+    const bool layered = layer_axes(exemplar.domain.bounds(), dim, params.radius).any;
+    const auto clearance = [&](const Vec3& c) {
+        if (!layered) return std::min(cap, core::ball_clearance(grid, domain, c));
+        return domain.inside(c) ? grid.clearance(c, cap) : -1.0;
+    };
+    std::priority_queue<std::pair<double, int>> heap;  // (clearance, -index): largest first, ties by index
+    for (size_t i = 0; i < candidates.size(); ++i)
+        if (const double d = clearance(candidates[i]); d > least) heap.emplace(d, -static_cast<int>(i));
+
+    // Filling for the count stops at holes narrower than a quarter spacing: smaller ones
+    // are not holes, and an element there would be a new defect.
+    const double count_gap = 0.25 * spacing;
+    const long bound = std::max<long>(16, std::lround(kInsertionBound * static_cast<double>(total_target)));
+    const core::KeyedRng rng(settings.seed, core::Purpose::jitter, settings.round);
+    std::vector<double> nearest;
+    while (!heap.empty()) {
+        const auto [ranked, negative] = heap.top();
+        heap.pop();
+        const double fresh = clearance(candidates[-negative]);
+        if (fresh < ranked) {  // an insertion came near since: re-rank
+            heap.emplace(fresh, negative);
+            continue;
+        }
+        // A lattice point can lie up to half a cell diagonal from the hole's centre: a hole
+        // is judged, and filled, at the centre a local search finds from it.
+        const bool short_of_count = settings.reach_count && total < total_target && fresh > count_gap;
+        const bool maybe_hole = settings.hole_radius > 0.0 && fresh + lattice_slack > settings.hole_radius;
+        if (!maybe_hole && !short_of_count) break;  // the largest remaining hole needs nothing
+        double depth = fresh;
+        const Vec3 c = maybe_hole ? hole_centre(candidates[-negative], dim, step, clearance, depth) : candidates[-negative];
+        const bool hole = maybe_hole && depth > settings.hole_radius;
+        if (!hole && !short_of_count) continue;
+        if (report.added >= bound) {
+            report.bound_hit = true;
+            break;
+        }
+        const int type = choose_type(grid, tails, c, count, target, cap, nearest);
+        if (of_type[type].empty()) continue;
+        const bool over = static_cast<double>(count[type]) >= static_cast<double>(target[type]) * (1.0 + settings.count_allowance);
+        if (over && !short_of_count && depth <= settings.must_fill_radius) continue;
+        // A keyed random element of the type, keyed by the hole's place, turned by the field.
+        const Quat frame = params.field.frame(c, dim);
+        int added = -1;
+        for (int attempt = 0; attempt < kCopiesTried && added < 0; ++attempt) {
+            const std::uint64_t key = static_cast<std::uint64_t>(-negative) * kCopiesTried + attempt;
+            const int source = of_type[type][rng.below(key, of_type[type].size())];
+            const Element& src = exemplar.elements[source];
+            bool inside = true;
+            for (int s = 0; s < src.sample_count && inside; ++s)
+                inside = domain.inside(frame.rotate(exemplar.samples[src.first_sample + s].p - src.position) + c);
+            if (inside) added = append_copy(into, exemplar, source, frame, c - frame.rotate(src.position), dim);
+        }
+        if (added < 0) continue;  // nothing fits here
+        const Element& e = out.elements[added];
+        for (int s = 0; s < e.sample_count; ++s) grid.add(out.samples[e.first_sample + s].p, e.radius, e.type);
+        ++count[type], ++total, ++report.added;
+    }
+    return report;
+}
+
+}  // namespace tessera::det
