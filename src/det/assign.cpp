@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/parallel.hpp"
+#include "det/shape_matching.hpp"
 
 namespace tessera::det {
 
@@ -307,6 +308,7 @@ AssignReport assign_step(OutputState& state, const InputIndex& index, const Doma
     AssignReport report = assign_positions(state, params, threads, &domain);
     assign_attributes(state, index, params, threads);
     snap_rigid_elements(state, index, params.dimension, threads);
+    match_deformable_shapes(state, *index.exemplar, params.dimension, threads);
     if (hold_floor && !sides.empty()) {
         for (size_t e = 0; e < out.elements.size(); ++e) {
             const Element& el = out.elements[e];
