@@ -250,6 +250,38 @@ def blob_mesh():
             f.write("f %d %d %d\n" % (a + 1, b + 1, c + 1))
 
 
+def noodles_2d():
+    """Deformable noodles of 8 samples (spacing 0.3) that bend gently, packed side by side
+    without touching in a 12 x 12 window of a periodic pattern: a 2D exemplar of deformable
+    multi-sample elements, whose outputs must neither tear nor leave holes."""
+    rng = random.Random(19)
+    size = [12.0, 12.0]
+    placed, els = [], []
+    for _ in range(60000):
+        if len(placed) >= 70:
+            break
+        heading = rng.gauss(0.0, 0.35)  # mostly along x, like noodles combed one way
+        p = [rng.uniform(0, size[0]), rng.uniform(0, size[1])]
+        turn = rng.gauss(0.0, 0.12)
+        pts = []
+        for _t in range(8):
+            pts.append(list(p))
+            heading += turn + rng.gauss(0.0, 0.05)
+            p = [p[0] + 0.3 * math.cos(heading), p[1] + 0.3 * math.sin(heading)]
+        cx = sum(q[0] for q in pts) / 8
+        cy = sum(q[1] for q in pts) / 8
+        shift = [cx % size[0] - cx, cy % size[1] - cy]  # centroid inside the window
+        pts = [[q[0] + shift[0], q[1] + shift[1]] for q in pts]
+        if any(math.sqrt(sum(x * x for x in periodic_delta(a, b, size, (True, True)))) < 0.42
+               for a in pts for s in placed for b in s):
+            continue
+        placed.append(pts)
+        els.append({"type": "noodle", "samples": [[r4(x), r4(y)] for x, y in pts], "radius": 0.1})
+    write("noodles_2d", 2, size, [{"name": "noodle", "rigid": False}], els,
+          "Deformable noodles of 8 samples (spacing 0.3), gently bent and mostly along x, packed "
+          "without touching; centroids in a 12 x 12 window of a periodic pattern.")
+
+
 if __name__ == "__main__":
     poisson_disk_2d()
     hex_jittered_2d()
@@ -260,3 +292,4 @@ if __name__ == "__main__":
     striped_dots_2d()
     blob_mesh()
     plum_stack_2d()
+    noodles_2d()

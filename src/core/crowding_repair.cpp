@@ -7,7 +7,6 @@
 #include <tuple>
 #include <utility>
 
-#include "core/nearest_by_type.hpp"
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
 #include "core/spatial_grid.hpp"
@@ -40,40 +39,59 @@ double bounded_tail(const std::vector<double>& sorted, double tail) {
     return std::max(tail, (static_cast<double>(ties) + kLeastOrder) / static_cast<double>(sorted.size()));
 }
 
-// An element closer to its nearest b than its rank allows.
+// A sample closer to the nearest sample of another element of type b than its rank allows.
 struct Violation {
-    int element = -1, neighbour = -1;
+    int sample = -1, neighbour = -1;  // sample indices
     double distance = 0.0, bound = 0.0;
 };
 
-// The violations of the current state: per ordered type pair, the a elements ranked by
-// their distance to the nearest b, each against the exemplar quantile of its rank.
-std::vector<Violation> find_violations(const Exemplar& data, const NearestDistanceTails& tails,
+// The points distances are measured between, and the element each belongs to.
+struct PointView {
+    std::vector<Vec3> p;
+    std::vector<int> owner;
+};
+
+PointView points_of(const Exemplar& data, CrowdingLevel level) {
+    PointView v;
+    const auto flat = [&](Vec3 q) { return data.dimension == 2 ? Vec3{q.x, q.y, 0.0} : q; };
+    if (level == CrowdingLevel::samples) {
+        for (const Sample& s : data.samples) v.p.push_back(flat(s.p)), v.owner.push_back(s.element);
+    } else {
+        for (size_t e = 0; e < data.elements.size(); ++e)
+            v.p.push_back(flat(data.elements[e].position)), v.owner.push_back(static_cast<int>(e));
+    }
+    return v;
+}
+
+// The violations of the current state: per ordered type pair, the points of a elements
+// ranked by their distance to the nearest point of another b element, each against the
+// exemplar quantile of its rank. Violations name points of `view`.
+std::vector<Violation> find_violations(const Exemplar& data, const PointView& view, const NearestDistanceTails& tails,
                                        const CrowdingRepairOptions& o) {
     const int types = tails.types();
-    const int n = static_cast<int>(data.elements.size());
+    const int n = static_cast<int>(view.p.size());
     std::vector<Violation> found;
-    if (n < 2 || types == 0 || static_cast<int>(data.types.size()) != types) return found;
+    if (data.elements.size() < 2 || types == 0 || static_cast<int>(data.types.size()) != types) return found;
     const double reach = tails.reach(o.tail);
     if (!(reach > 0.0)) return found;
-    const std::vector<Vec3> p = centroids_of(data);
     SpatialGrid grid;
-    grid.build(p, reach, data.dimension);
-    // Per element and type: the nearest other element of that type within reach.
+    grid.build(view.p, reach, data.dimension);
+    const auto type_of = [&](int i) { return data.elements[view.owner[i]].type; };
+    // Per point and type: the nearest point of another element of that type within reach.
     std::vector<int> nearest(static_cast<size_t>(n) * types, -1);
     std::vector<double> distance(static_cast<size_t>(n) * types, kInf);
     parallel_for(n, resolve_threads(o.threads), [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i)
-            grid.for_each_within(p[i], reach, [&](int j, double d2) {
-                if (j == i) return;
-                const size_t slot = static_cast<size_t>(i) * types + data.elements[j].type;
+            grid.for_each_within(view.p[i], reach, [&](int j, double d2) {
+                if (view.owner[j] == view.owner[i]) return;
+                const size_t slot = static_cast<size_t>(i) * types + type_of(j);
                 const double d = std::sqrt(d2);
                 if (d < distance[slot] || (d == distance[slot] && j < nearest[slot])) distance[slot] = d, nearest[slot] = j;
             });
     });
     std::vector<long> count(types, 0);
-    for (const Element& e : data.elements) ++count[e.type];
-    // (distance, the pair's lower element, the element): the two ends of a mutual pair are
+    for (int i = 0; i < n; ++i) ++count[type_of(i)];
+    // (distance, the pair's lower point, the point): the two ends of a mutual pair are
     // adjacent in the ranking, so a share of close pairs the exemplar allows stays whole.
     std::vector<std::tuple<double, int, int>> ranked;
     for (int a = 0; a < types; ++a)
@@ -81,7 +99,7 @@ std::vector<Violation> find_violations(const Exemplar& data, const NearestDistan
             if (tails.distances(a, b).empty() || count[a] == 0) continue;
             ranked.clear();
             for (int i = 0; i < n; ++i)
-                if (data.elements[i].type == a && nearest[static_cast<size_t>(i) * types + b] >= 0)
+                if (type_of(i) == a && nearest[static_cast<size_t>(i) * types + b] >= 0)
                     ranked.emplace_back(distance[static_cast<size_t>(i) * types + b],
                                         std::min(i, nearest[static_cast<size_t>(i) * types + b]), i);
             std::sort(ranked.begin(), ranked.end());
@@ -89,7 +107,7 @@ std::vector<Violation> find_violations(const Exemplar& data, const NearestDistan
             // beyond its closest ones and their ties (a small exemplar's lowest quantiles are its
             // few closest pairs; coincident pairs make many ties at 0).
             const double tail = bounded_tail(tails.distances(a, b), o.tail);
-            // Beyond the tail's share every element must lie beyond the tail's distance.
+            // Beyond the tail's share every point must lie beyond the tail's distance.
             const double tail_distance = tails.quantile(a, b, tail);
             for (size_t k = 0; k < ranked.size(); ++k) {
                 const double u = static_cast<double>(k + 1) / (static_cast<double>(count[a]) * o.slack);
@@ -101,6 +119,30 @@ std::vector<Violation> find_violations(const Exemplar& data, const NearestDistan
             }
         }
     return found;
+}
+
+Vec3 separation_direction(const Exemplar& data, int i, int j);
+
+// The element moves that resolve `found` (points of `view`): each violating point is pushed
+// away from its too-close neighbour (half when the violation is mutual), and an element
+// moves by the mean of its points' pushes. Adds into shift/shifts.
+void add_moves(const Exemplar& data, const PointView& view, const std::vector<Violation>& found,
+               const CrowdingRepairOptions& o, std::vector<Vec3>& shift, std::vector<int>& shifts) {
+    std::map<std::pair<int, int>, int> pairs;
+    for (const Violation& v : found) ++pairs[{v.sample, v.neighbour}];
+    for (const Violation& v : found) {
+        const int e = view.owner[v.sample], other = view.owner[v.neighbour];
+        if (data.elements[e].locked) continue;
+        const bool shared = pairs.count({v.neighbour, v.sample}) > 0 && !data.elements[other].locked;
+        Vec3 away = view.p[v.sample] - view.p[v.neighbour];
+        const double length = norm(away);
+        away = length > 1e-12 * v.bound ? away * (1.0 / length) : separation_direction(data, e, other);
+        const double gap = (v.bound * kOvershoot - v.distance) * (shared ? 0.5 : 1.0);
+        Vec3 move = away * gap;
+        if (!o.held_level.empty() && o.held_level[e]) move -= o.level_axis * dot(move, o.level_axis);
+        shift[e] += move;
+        ++shifts[e];
+    }
 }
 
 // A unit direction for a coincident pair, the same for any thread count; i and j get
@@ -137,10 +179,12 @@ bool move_element(Exemplar& data, int e, const Vec3& shift, const Domain& domain
 
 }  // namespace
 
-NearestDistanceTails::NearestDistanceTails(const Exemplar& exemplar) : types_(static_cast<int>(exemplar.types.size())) {
+NearestDistanceTails::NearestDistanceTails(const Exemplar& exemplar, CrowdingLevel level)
+    : level_(level), types_(static_cast<int>(exemplar.types.size())) {
     sorted_.assign(static_cast<size_t>(types_) * types_, {});
-    const std::vector<Vec3> p = centroids_of(exemplar);
-    if (p.size() < 2) return;
+    if (exemplar.elements.size() < 2) return;
+    const PointView view = points_of(exemplar, level);
+    const std::vector<Vec3>& p = view.p;
     // Every distance, whatever its length: the exemplar is small.
     Vec3 lo = p[0], hi = p[0];
     for (const Vec3& q : p)
@@ -148,13 +192,30 @@ NearestDistanceTails::NearestDistanceTails(const Exemplar& exemplar) : types_(st
     const double diagonal = norm(hi - lo) * 1.001 + 1e-300;
     SpatialGrid grid;
     grid.build(p, std::max(diagonal / 32.0, 1e-300), exemplar.dimension);
-    const std::vector<double> nearest = nearest_by_type(exemplar, p, grid, diagonal);
-    for (size_t i = 0; i < p.size(); ++i)
-        for (int b = 0; b < types_; ++b) {
-            const double d = nearest[i * types_ + b];
-            if (std::isfinite(d)) sorted_[exemplar.elements[i].type * types_ + b].push_back(d);
+    std::vector<double> nearest(types_);
+    for (size_t i = 0; i < p.size(); ++i) {
+        std::fill(nearest.begin(), nearest.end(), kInf);
+        // The nearest point of each type by growing shells: most are found within a few cells.
+        for (double r = diagonal / 32.0;; r *= 2.0) {
+            grid.for_each_within(p[i], r, [&](int j, double d2) {
+                if (view.owner[j] == view.owner[i]) return;
+                double& best = nearest[exemplar.elements[view.owner[j]].type];
+                best = std::min(best, std::sqrt(d2));
+            });
+            bool all = true;
+            for (double d : nearest) all = all && d <= r;
+            if (all || r >= diagonal) break;
         }
+        const int a = exemplar.elements[view.owner[i]].type;
+        for (int b = 0; b < types_; ++b)
+            if (std::isfinite(nearest[b])) sorted_[a * types_ + b].push_back(nearest[b]);
+    }
     for (auto& v : sorted_) std::sort(v.begin(), v.end());
+}
+
+CrowdingBounds::CrowdingBounds(const Exemplar& exemplar)
+    : centroids(exemplar, CrowdingLevel::centroids), has_samples(exemplar.has_multi_sample_elements()) {
+    if (has_samples) samples = NearestDistanceTails(exemplar, CrowdingLevel::samples);
 }
 
 double NearestDistanceTails::quantile(int a, int b, double u) const { return lower_quantile(distances(a, b), u); }
@@ -173,50 +234,71 @@ double NearestDistanceTails::hard_core(int a, int b) const {
     return std::min(ab.empty() ? kInf : ab.front(), ba.empty() ? kInf : ba.front());
 }
 
-CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const NearestDistanceTails& tails,
+namespace {
+
+// The violations of both levels, as (view, violations) pairs.
+struct LevelViolations {
+    PointView view;
+    std::vector<Violation> found;
+};
+
+std::vector<LevelViolations> all_violations(const Exemplar& data, const CrowdingBounds& bounds,
+                                            const CrowdingRepairOptions& o) {
+    std::vector<LevelViolations> all;
+    for (const NearestDistanceTails* tails : {&bounds.centroids, bounds.has_samples ? &bounds.samples : nullptr}) {
+        if (tails == nullptr) continue;
+        LevelViolations level;
+        level.view = points_of(data, tails->level());
+        level.found = find_violations(data, level.view, *tails, o);
+        all.push_back(std::move(level));
+    }
+    return all;
+}
+
+int count_of(const std::vector<LevelViolations>& all) {
+    int n = 0;
+    for (const LevelViolations& l : all) n += static_cast<int>(l.found.size());
+    return n;
+}
+
+}  // namespace
+
+CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const CrowdingBounds& bounds,
                                      const CrowdingRepairOptions& o) {
     CrowdingRepairReport report;
     data.update_positions();  // positions are the samples' centroids (a caller may have moved samples)
     if (data.dimension == 2)
         for (Element& e : data.elements) e.position.z = 0.0;
     for (int round = 0; round < o.rounds; ++round) {
-        const std::vector<Violation> found = find_violations(data, tails, o);
-        report.remaining = static_cast<int>(found.size());
-        if (found.empty()) return report;
+        const std::vector<LevelViolations> all = all_violations(data, bounds, o);
+        report.remaining = count_of(all);
+        if (report.remaining == 0) return report;
         ++report.rounds;
-        // Mutual violations (each the other's too-close neighbour) share the correction.
-        std::map<std::pair<int, int>, int> pairs;
-        for (const Violation& v : found) ++pairs[{v.element, v.neighbour}];
         std::vector<Vec3> shift(data.elements.size());
-        std::vector<char> has_shift(data.elements.size(), 0);
-        for (const Violation& v : found) {
-            if (data.elements[v.element].locked) continue;
-            const bool shared = pairs.count({v.neighbour, v.element}) > 0 && !data.elements[v.neighbour].locked;
-            Vec3 away = data.elements[v.element].position - data.elements[v.neighbour].position;
-            if (data.dimension == 2) away.z = 0.0;
-            const double length = norm(away);
-            away = length > 1e-12 * v.bound ? away * (1.0 / length) : separation_direction(data, v.element, v.neighbour);
-            const double gap = (v.bound * kOvershoot - v.distance) * (shared ? 0.5 : 1.0);
-            Vec3 move = away * gap;
-            if (!o.held_level.empty() && o.held_level[v.element]) move -= o.level_axis * dot(move, o.level_axis);
-            shift[v.element] += move;
-            has_shift[v.element] = 1;
-        }
+        std::vector<int> shifts(data.elements.size(), 0);
+        for (const LevelViolations& level : all) add_moves(data, level.view, level.found, o, shift, shifts);
         for (size_t e = 0; e < data.elements.size(); ++e)
-            if (has_shift[e] && move_element(data, static_cast<int>(e), shift[e], domain)) ++report.moved;
+            if (shifts[e] > 0 && move_element(data, static_cast<int>(e), shift[e] * (1.0 / shifts[e]), domain))
+                ++report.moved;
     }
-    report.remaining = static_cast<int>(find_violations(data, tails, o).size());
+    report.remaining = count_of(all_violations(data, bounds, o));
     report.bound_hit = report.remaining > 0;
     return report;
 }
 
-std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const NearestDistanceTails& tails,
+std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const CrowdingBounds& bounds,
                                        const CrowdingRepairOptions& options) {
     std::vector<CrowdedPair> pairs;
-    for (const Violation& v : find_violations(data, tails, options)) pairs.push_back({v.element, v.neighbour});
+    for (const LevelViolations& level : all_violations(data, bounds, options))
+        for (const Violation& v : level.found) pairs.push_back({level.view.owner[v.sample], level.view.owner[v.neighbour]});
     std::sort(pairs.begin(), pairs.end(), [](const CrowdedPair& a, const CrowdedPair& b) {
         return a.element != b.element ? a.element < b.element : a.neighbour < b.neighbour;
     });
+    pairs.erase(std::unique(pairs.begin(), pairs.end(),
+                            [](const CrowdedPair& a, const CrowdedPair& b) {
+                                return a.element == b.element && a.neighbour == b.neighbour;
+                            }),
+                pairs.end());
     return pairs;
 }
 

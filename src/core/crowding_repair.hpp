@@ -7,9 +7,11 @@
 // (the pair correlation) a method optimises.
 //
 // The exemplar tells how close elements may come: for each ordered pair of element types
-// (a, b), the distribution of the distance from an a element to its nearest b element.
-// The repair holds the lower tail of the output's distribution to the exemplar's: ranking
-// the output's a elements by that distance, the k-th of n_a may be no closer than the
+// (a, b), the distribution of the distance from a sample of an a element to the nearest
+// sample of another, b element (for single-sample elements: element to element; for
+// noodles and sticks the samples see crossings that centroids miss). The repair holds the
+// lower tail of the output's distribution to the exemplar's: ranking the output's samples
+// of a elements by that distance, the k-th of n_a may be no closer than the
 // exemplar's quantile at k / (n_a * slack), for the lowest `tail` share (and at least the
 // exemplar's three closest distances). So a clustered
 // exemplar keeps its legitimate close pairs, an exemplar with a few coincident pairs may
@@ -27,13 +29,19 @@
 
 namespace tessera::core {
 
-// Per ordered type pair (a, b): the sorted distances from each exemplar a element
-// (centroid) to its nearest other b element.
+// What the distances are measured between: element centroids (the statistic a viewer of
+// point patterns judges), or samples of different elements (for multi-sample elements:
+// two noodles that cross have distant centroids but touching samples).
+enum class CrowdingLevel { centroids, samples };
+
+// Per ordered type pair (a, b): the sorted distances from each point (centroid or sample)
+// of an exemplar a element to the nearest point of another b element.
 class NearestDistanceTails {
 public:
     NearestDistanceTails() = default;
-    explicit NearestDistanceTails(const Exemplar& exemplar);
+    NearestDistanceTails(const Exemplar& exemplar, CrowdingLevel level);
 
+    CrowdingLevel level() const { return level_; }
     int types() const { return types_; }
     // Exemplar distances for (a, b), ascending (empty when b never neighbours a).
     const std::vector<double>& distances(int a, int b) const { return sorted_[a * types_ + b]; }
@@ -43,12 +51,25 @@ public:
     // The largest distance any repair bound can ask for: the `tail` quantile over all pairs.
     double reach(double tail) const;
     // The smallest exemplar distance of (a, b) or (b, a), or 0 when neither is known:
-    // closer than this two elements of these types never are.
+    // closer than this two points of elements of these types never are.
     double hard_core(int a, int b) const;
 
 private:
+    CrowdingLevel level_ = CrowdingLevel::centroids;
     int types_ = 0;
     std::vector<std::vector<double>> sorted_;
+};
+
+// The bounds a repair holds: between centroids always, and between samples of different
+// elements when the exemplar has multi-sample elements.
+struct CrowdingBounds {
+    explicit CrowdingBounds(const Exemplar& exemplar);
+    NearestDistanceTails centroids;
+    bool has_samples = false;
+    NearestDistanceTails samples;
+    // The closest approach of points of two types: between samples where they are known.
+    double hard_core(int a, int b) const { return (has_samples ? samples : centroids).hard_core(a, b); }
+    int types() const { return centroids.types(); }
 };
 
 struct CrowdingRepairOptions {
@@ -73,16 +94,16 @@ struct CrowdingRepairReport {
 // Repairs `data` (elements with their samples; types as in `tails`) in place (element
 // positions are first recomputed from the samples), keeping
 // every moved sample inside `domain`. Deterministic for any thread count.
-CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const NearestDistanceTails& tails,
+CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const CrowdingBounds& bounds,
                                      const CrowdingRepairOptions& options = {});
 
 // An element closer to its nearest neighbour of some type than its rank allows, and that neighbour.
 struct CrowdedPair {
     int element = -1, neighbour = -1;
 };
-// The elements repair_crowding would move now (one entry per element and neighbour type),
-// without moving anything; in element order.
-std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const NearestDistanceTails& tails,
+// The element pairs repair_crowding would move now (each pair once per direction), without
+// moving anything; in element order.
+std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const CrowdingBounds& bounds,
                                        const CrowdingRepairOptions& options = {});
 
 }  // namespace tessera::core

@@ -40,6 +40,6 @@ int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, c
 // Removes elements the crowding repair could not separate (core::crowded_pairs after it),
 // of types above their count, the later of each pair first. Returns how many.
 int remove_unresolved_crowding(Provenance of, const Domain& domain, const Params& params,
-                               const core::NearestDistanceTails& tails, const core::CrowdingRepairOptions& options);
+                               const core::CrowdingBounds& tails, const core::CrowdingRepairOptions& options);
 
 }  // namespace tessera::det

@@ -47,7 +47,7 @@ void hold_floor_levels(core::CrowdingRepairOptions& repair, const Arrangement& o
 // The sub-steps that keep the output's holes and close pairs within the exemplar's:
 // vacancies filled, types over their count thinned where crowded, pairs pushed apart.
 core::CrowdingRepairReport keep_bounds(det::OutputState& state, const Exemplar& exemplar, const Domain& domain,
-                                       const det::Params& params, const core::NearestDistanceTails& tails,
+                                       const det::Params& params, const core::CrowdingBounds& tails,
                                        core::CrowdingRepairOptions& repair, det::VacancySettings vacancies, int round) {
     det::Provenance provenance{state.arrangement, state.match, state.source_element};
     state.arrangement.update_positions();
@@ -83,7 +83,7 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     det::InitResult init = det::initialize_patches(exemplar, index, domain, params, options);
     // The exemplar's close-distance tails bound the output's (core/crowding_repair.hpp), and
     // its largest hole the output's (det/vacancies.hpp).
-    const core::NearestDistanceTails tails(exemplar);
+    const core::CrowdingBounds tails(exemplar);
     const double hole_radius = kHoleTolerance * det::exemplar_hole_radius(exemplar, params.spacing);
     init.thinned = det::thin_crowds(init.provenance(), exemplar, domain, params);
     det::VacancySettings vacancies;

@@ -148,7 +148,7 @@ int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, c
 }
 
 int remove_unresolved_crowding(Provenance of, const Domain& domain, const Params& params,
-                               const core::NearestDistanceTails& tails, const core::CrowdingRepairOptions& options) {
+                               const core::CrowdingBounds& tails, const core::CrowdingRepairOptions& options) {
     const std::vector<core::CrowdedPair> crowded = core::crowded_pairs(of.out, tails, options);
     if (crowded.empty()) return 0;
     const int types = static_cast<int>(of.out.types.size());

@@ -19,7 +19,7 @@ long slack_of(long target) { return std::max<long>(1, std::lround(0.01 * static_
 }  // namespace
 
 int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
-                   const core::NearestDistanceTails& tails, std::uint64_t seed) {
+                   const core::CrowdingBounds& tails, std::uint64_t seed) {
     Arrangement& out = of.out;
     const int types = static_cast<int>(exemplar.types.size());
     const int dim = params.dimension;

@@ -19,6 +19,6 @@ namespace tessera::det {
 
 // Returns how many elements were exchanged (inserted; about as many were removed).
 int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
-                   const core::NearestDistanceTails& tails, std::uint64_t seed);
+                   const core::CrowdingBounds& tails, std::uint64_t seed);
 
 }  // namespace tessera::det

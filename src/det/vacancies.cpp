@@ -67,7 +67,7 @@ Vec3 hole_centre(const Vec3& p, int dims, double step, const Clearance& clearanc
 // The type to put into a hole at c: of the types whose hard core holds against the
 // elements around c, the one furthest below its count (relative to it); when none holds,
 // the one that comes closest to holding it.
-int choose_type(const core::ObstacleGrid& grid, const core::NearestDistanceTails& tails, const Vec3& c,
+int choose_type(const core::ObstacleGrid& grid, const core::CrowdingBounds& tails, const Vec3& c,
                 const std::vector<long>& count, const std::vector<long>& target, double reach,
                 std::vector<double>& nearest) {
     const int types = static_cast<int>(count.size());
@@ -105,7 +105,7 @@ double exemplar_hole_radius(const Exemplar& exemplar, double spacing) {
 }
 
 VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Domain& domain, const Params& params,
-                             const core::NearestDistanceTails& tails, const VacancySettings& settings) {
+                             const core::CrowdingBounds& tails, const VacancySettings& settings) {
     VacancyReport report;
     Arrangement& out = into.out;
     const int dim = params.dimension;

@@ -38,7 +38,7 @@ struct VacancyReport {
 };
 
 VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Domain& domain, const Params& params,
-                             const core::NearestDistanceTails& tails, const VacancySettings& settings);
+                             const core::CrowdingBounds& tails, const VacancySettings& settings);
 
 // The candidate centres of holes: a lattice of a quarter spacing (a third in 3D) inside the domain.
 std::vector<Vec3> vacancy_candidates(const Domain& domain, int dimension, double spacing);

@@ -53,7 +53,7 @@ TEST(CrowdingRepair, DuplicatesAreSeparatedToTheExemplarsClosestDistances) {
         if (duplicated[i]) out.add_element(0, {lattice.elements[i].position + Vec3{0.0125 * (i % 25), 0.0, 0.0}});
     }
     ASSERT_LT(closest_pair(out), 1e-9);
-    const core::NearestDistanceTails tails(ex);
+    const core::CrowdingBounds tails(ex);
     const core::CrowdingRepairReport report = core::repair_crowding(out, out.domain, tails);
     EXPECT_FALSE(report.bound_hit);
     EXPECT_EQ(report.remaining, 0);
@@ -77,7 +77,7 @@ TEST(CrowdingRepair, AFaithfulCopyAndLockedElementsAreLeftAlone) {
                            {centre + Vec3{0.6 * (rng.uniform(c) - 0.5), 0.6 * (rng.uniform(c + 1) - 0.5), 0}});
     }
     Exemplar copy = ex;
-    const core::NearestDistanceTails tails(ex);
+    const core::CrowdingBounds tails(ex);
     EXPECT_EQ(core::repair_crowding(copy, copy.domain, tails).moved, 0);
     // A locked element is never moved, even when it is the crowded one.
     Exemplar out = jittered_lattice(10, 3);
@@ -85,7 +85,7 @@ TEST(CrowdingRepair, AFaithfulCopyAndLockedElementsAreLeftAlone) {
     out.add_element(0, {out.elements[40].position + Vec3{0.05, 0, 0}});
     out.elements.back().locked = true;
     const Vec3 locked_at = out.elements.back().position;
-    const core::NearestDistanceTails lattice_tails(lattice);
+    const core::CrowdingBounds lattice_tails(lattice);
     core::repair_crowding(out, out.domain, lattice_tails);
     EXPECT_EQ(out.elements.back().position, locked_at);
     EXPECT_GE(norm(out.elements[40].position - locked_at), 0.95 * lattice_tails.hard_core(0, 0));
@@ -96,8 +96,8 @@ TEST(CrowdingRepair, CoincidentPairsTheExemplarHasAreKeptInProportion) {
     // keeps them, one with five times the share loses the excess.
     Exemplar ex = jittered_lattice(20, 6);
     for (int k = 0; k < 10; ++k) ex.add_element(0, {ex.elements[k * 37].position});
-    const core::NearestDistanceTails tails(ex);
-    EXPECT_EQ(tails.quantile(0, 0, 0.01), 0.0);
+    const core::CrowdingBounds tails(ex);
+    EXPECT_EQ(tails.centroids.quantile(0, 0, 0.01), 0.0);
     Exemplar out = jittered_lattice(20, 7);
     for (int k = 0; k < 50; ++k) out.add_element(0, {out.elements[k * 7].position});
     core::repair_crowding(out, out.domain, tails);
