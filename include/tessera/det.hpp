@@ -48,6 +48,11 @@ struct DetOptions {
     // Random candidate patches tried per output cell at initialization; the one that
     // agrees best with the elements already placed is copied (quilting-style seams).
     int patch_candidates = 16;
+    // Sweeps of the pair correlation relaxation after the iterations, for exemplars of
+    // single-sample elements (det/pair_relaxation.hpp, docs/det.md): small moves that bring
+    // the output's pair correlation closer to the exemplar's where seams and the averaging
+    // of Eq. 4 left it. 0 = off.
+    int relax_sweeps = 4;
     // Worker threads for search and assignment; 0 = all hardware threads.
     // Results are byte-identical for every value.
     int threads = 0;

@@ -55,22 +55,18 @@ void ObstacleGrid::nearest_by_tag(const Vec3& at, int tags, double cap, std::vec
     });
 }
 
-EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<double>& rims, const Domain& domain,
-                             int dimension, double step, int threads) {
-    EmptyBall best;
+namespace {
+
+// The best lattice point (ties: lowest index) refined by a pattern search, with every
+// clearance searched up to `cap`.
+EmptyBall largest_within(const ObstacleGrid& grid, const Domain& domain, int dimension, double step, const int* n,
+                         double cap, int threads) {
     const Box box = domain.bounds();
-    int n[3] = {1, 1, 1};
-    for (int k = 0; k < dimension; ++k) n[k] = std::max(1, static_cast<int>(std::ceil(box.size()[k] / step)));
-    if (static_cast<double>(n[0]) * n[1] * n[2] > 2e8)
-        throw Error(ErrorKind::input, "largest empty circle: the domain is too large for its elements");
-    ObstacleGrid grid(box, std::max(step * 4.0, 1e-300), dimension);
-    for (size_t i = 0; i < points.size(); ++i) grid.add(points[i], rims[i]);
     const auto centre = [&](long i) {
         const long row = i / n[0];
         return box.lo + Vec3{(i % n[0] + 0.5) * step, (row % n[1] + 0.5) * step,
                              dimension == 3 ? (row / n[1] + 0.5) * step : 0.0};
     };
-    // Per thread the best lattice point, ties to the lowest index.
     struct Best {
         double radius = 0.0;
         long index = -1;
@@ -78,7 +74,7 @@ EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<
     std::vector<Best> per_thread(resolve_threads(threads));
     parallel_for(n[2] * n[1], static_cast<int>(per_thread.size()), [&](int begin, int end, int t) {
         for (long i = static_cast<long>(begin) * n[0]; i < static_cast<long>(end) * n[0]; ++i) {
-            const double d = ball_clearance(grid, domain, centre(i));
+            const double d = ball_clearance(grid, domain, centre(i), cap);
             if (d > per_thread[t].radius) per_thread[t] = {d, i};
         }
     });
@@ -86,9 +82,9 @@ EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<
     for (const Best& b : per_thread)
         if (b.radius > top.radius || (b.radius == top.radius && b.index >= 0 && (top.index < 0 || b.index < top.index)))
             top = b;
+    EmptyBall best;
     if (top.index < 0) return best;
     best = {top.radius, centre(top.index)};
-    // Pattern search: move the centre by a shrinking step while the clearance grows.
     for (double h = step; h > step * 1e-3; h *= 0.5) {
         bool moved = true;
         for (int guard = 0; moved && guard < 64; ++guard) {
@@ -97,12 +93,31 @@ EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<
                 for (double sign : {-1.0, 1.0}) {
                     Vec3 c = best.center;
                     c[k] += sign * h;
-                    const double d = ball_clearance(grid, domain, c);
+                    const double d = ball_clearance(grid, domain, c, cap);
                     if (d > best.radius) best = {d, c}, moved = true;
                 }
         }
     }
     return best;
+}
+
+}  // namespace
+
+EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<double>& rims, const Domain& domain,
+                             int dimension, double step, int threads) {
+    const Box box = domain.bounds();
+    int n[3] = {1, 1, 1};
+    for (int k = 0; k < dimension; ++k) n[k] = std::max(1, static_cast<int>(std::ceil(box.size()[k] / step)));
+    if (static_cast<double>(n[0]) * n[1] * n[2] > 2e8)
+        throw Error(ErrorKind::input, "largest empty circle: the domain is too large for its elements");
+    ObstacleGrid grid(box, std::max(step * 4.0, 1e-300), dimension);
+    for (size_t i = 0; i < points.size(); ++i) grid.add(points[i], rims[i]);
+    // Searches reach `cap`; when the largest ball found is that large, the search is redone
+    // with twice the cap (a query costs the square or cube of its reach).
+    for (double cap = 8.0 * step;; cap *= 2.0) {
+        const EmptyBall best = largest_within(grid, domain, dimension, step, n, cap, threads);
+        if (best.radius < cap || cap > norm(box.size())) return best;
+    }
 }
 
 }  // namespace tessera::core

@@ -43,11 +43,12 @@ private:
 };
 
 // The clearance of a ball centred at c: to the obstacles and to the domain's boundary
-// (the ball must lie inside the domain); <= 0 outside it.
-inline double ball_clearance(const ObstacleGrid& grid, const Domain& domain, const Vec3& c) {
+// (the ball must lie inside the domain), at most `cap` (the search reaches no further);
+// <= 0 outside the domain.
+inline double ball_clearance(const ObstacleGrid& grid, const Domain& domain, const Vec3& c, double cap) {
     const double wall = domain.distance_to_boundary(c);
     if (!(wall > 0.0)) return wall;
-    return std::min(wall, grid.clearance(c, wall));
+    return grid.clearance(c, std::min(wall, cap));
 }
 
 struct EmptyBall {

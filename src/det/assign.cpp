@@ -53,7 +53,13 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
         for (int i = 0; i < n; ++i) {
             const Vec3& p = out.samples[i].p;
             if (domain->inside(p)) continue;
-            const Vec3 target = domain->closest_inside(p);
+            Vec3 target = domain->closest_inside(p);
+            // Reflected back across the boundary, not onto it: pulled onto the wall, samples
+            // that drift out pile up along it in a line the exemplar never shows.
+            if (!params.floor_constraints) {
+                const Vec3 mirror = target * 2.0 - p;
+                if (domain->inside(mirror)) target = mirror;
+            }
             diagonal[i] += params.wall_weight;
             for (int k = 0; k < dim; ++k) rhs(i, k) += params.wall_weight * (target[k] - p[k]);
         }

@@ -43,6 +43,7 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
     if (!std::isfinite(options.patch_size) || options.patch_size < 0.0) bad("--patch-size must be >= 0");
     if (options.patch_candidates < 1) bad("--patch-candidates must be >= 1");
     if (options.threads < 0) bad("--threads must be >= 0");
+    if (options.relax_sweeps < 0 || options.relax_sweeps > 1000) bad("--relax-sweeps must be from 0 to 1000");
     Params p;
     p.dimension = exemplar.dimension;
     p.spacing = mean_nearest_neighbor_distance(exemplar);

@@ -11,6 +11,7 @@
 #include "det/floor.hpp"
 #include "det/init.hpp"
 #include "det/input_index.hpp"
+#include "det/pair_relaxation.hpp"
 #include "det/type_exchange.hpp"
 #include "det/vacancies.hpp"
 #include "det/search.hpp"
@@ -148,6 +149,12 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         }
         keep_bounds(state, exemplar, domain, params, tails, repair, vacancies, it + 1);
         report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
+    }
+    if (const det::PairRelaxation relaxation(exemplar, params); relaxation.applies() && options.relax_sweeps > 0) {
+        state.arrangement.update_positions();
+        hold_floor_levels(repair, state.arrangement, domain, params);
+        relaxation.relax(state.arrangement, domain, repair.held_level, options.relax_sweeps, options.seed, threads);
+        report(progress, {"relax", options.iterations, options.iterations, 0.0, seconds_since(t0)});
     }
     det::keep_inside_domain(state.arrangement, domain, params.dimension);
     {

@@ -55,7 +55,7 @@ int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain
     const double cap = 4.0 * params.spacing;
     std::priority_queue<std::pair<double, int>> heap;  // (room, -index)
     for (size_t i = 0; i < candidates.size(); ++i)
-        heap.emplace(std::min(cap, core::ball_clearance(room, domain, candidates[i])), -static_cast<int>(i));
+        heap.emplace(core::ball_clearance(room, domain, candidates[i], cap), -static_cast<int>(i));
     std::vector<std::vector<int>> of_type(types);
     for (size_t i = 0; i < exemplar.elements.size(); ++i) of_type[exemplar.elements[i].type].push_back(static_cast<int>(i));
     const core::KeyedRng rng(seed, core::Purpose::jitter, 0x7e);
@@ -75,7 +75,7 @@ int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain
         const auto [ranked, negative] = heap.top();
         heap.pop();
         const Vec3& c = candidates[-negative];
-        const double fresh = std::min(cap, core::ball_clearance(room, domain, c));
+        const double fresh = core::ball_clearance(room, domain, c, cap);
         if (fresh < ranked) {
             heap.emplace(fresh, negative);
             continue;

@@ -42,13 +42,13 @@ std::vector<Vec3> lattice_inside(const Domain& domain, int dim, double step) {
 
 namespace {
 
-// The centre of the hole around lattice point p: a pattern search (steps from the lattice
-// step down to a 64th of it) for the largest clearance; `depth` is set to it.
+// The centre of the hole around lattice point p: a pattern search (steps from half the
+// lattice step down to a 32nd of it) for the largest clearance; `depth` is set to it.
 template <class Clearance>
 Vec3 hole_centre(const Vec3& p, int dims, double step, const Clearance& clearance, double& depth) {
     Vec3 best = p;
     depth = clearance(p);
-    for (double h = 0.5 * step; h > step / 64.0; h *= 0.5) {
+    for (double h = 0.5 * step; h > step / 32.0; h *= 0.5) {
         bool moved = true;
         for (int guard = 0; moved && guard < 16; ++guard) {
             moved = false;
@@ -124,21 +124,22 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
     core::ObstacleGrid grid(domain.bounds(), spacing, dim);
     for (const Sample& s : out.samples) grid.add(s.p, out.elements[s.element].radius, out.elements[s.element].type);
     const bool count_fill = settings.reach_count && total < total_target;
-    // Filling holes only, a lattice with a step of hole_radius / sqrt(d) has a point within
-    // half the hole radius of every hole's centre, which the local search then finds.
+    // Filling holes only, a lattice with a step of hole_radius / (2 sqrt(d)) has a point within
+    // a quarter of the hole radius of every hole's centre, which the local search then finds
+    // (a coarser one makes most of the pattern's interstices candidates).
     const double step = count_fill ? vacancy_step(dim, spacing)
-                                   : std::max(vacancy_step(dim, spacing), settings.hole_radius / std::sqrt(double(dim)));
+                                   : std::max(vacancy_step(dim, spacing), 0.5 * settings.hole_radius / std::sqrt(double(dim)));
     const double lattice_slack = 0.5 * step * std::sqrt(static_cast<double>(dim));
     const std::vector<Vec3> candidates = lattice_inside(domain, dim, step);
     // Holes wider than `cap` rank equal. Filling holes only, the heap needs no lattice point
     // that cannot lie in one (the hole's centre is within lattice_slack of some point).
-    const double cap = count_fill ? 4.0 * spacing : settings.hole_radius + 2.0 * lattice_slack;
+    const double cap = count_fill ? 2.0 * spacing : settings.hole_radius + 2.0 * lattice_slack;
     const double least = count_fill ? 0.0 : settings.hole_radius - lattice_slack;
     // A layered exemplar fills a domain as thin as itself (a shell): its holes lie in the
     // layer, and the walls of the thin axis must not bound their size.
     const bool layered = layer_axes(exemplar.domain.bounds(), dim, params.radius).any;
     const auto clearance = [&](const Vec3& c) {
-        if (!layered) return std::min(cap, core::ball_clearance(grid, domain, c));
+        if (!layered) return core::ball_clearance(grid, domain, c, cap);
         return domain.inside(c) ? grid.clearance(c, cap) : -1.0;
     };
     std::priority_queue<std::pair<double, int>> heap;  // (clearance, -index): largest first, ties by index
