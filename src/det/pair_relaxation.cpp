@@ -142,12 +142,17 @@ PairRelaxation::PairRelaxation(const Exemplar& exemplar, const Params& params) {
     const PairSums sums(bins_, step_, bandwidth_, &exemplar.domain);
     std::vector<double> s(static_cast<size_t>(types_ * (types_ + 1) / 2) * bins_, 0.0);
     const std::vector<Vec3> p = element_centroids(exemplar.elements, exemplar.dimension);
+    hard_core_.assign(static_cast<size_t>(types_ * (types_ + 1) / 2), INFINITY);
     for (size_t i = 0; i < p.size(); ++i)
         for (size_t j = i + 1; j < p.size(); ++j) {
             const Vec3 d = p[j] - p[i];
+            double& closest = hard_core_[pair_index(exemplar.elements[i].type, exemplar.elements[j].type)];
+            closest = std::min(closest, norm(d));
             if (squared_norm(d) > (r_max_ + kKernelReach * bandwidth_) * (r_max_ + kKernelReach * bandwidth_)) continue;
             sums.add(d, pair_index(exemplar.elements[i].type, exemplar.elements[j].type), 1.0, s);
         }
+    for (double& d : hard_core_)
+        if (!std::isfinite(d)) d = 0.0;  // a type pair the exemplar never shows (a single element)
     const std::vector<double> f = sum_to_g(count, types_, bins_, step_, exemplar.dimension, exemplar.domain.measure());
     target_.resize(s.size());
     for (size_t k = 0; k < s.size(); ++k) target_[k] = f[k] * s[k];
@@ -216,11 +221,13 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
         for (int j : w.near) {
             const Vec3 d = p[j] - q;
             if (squared_norm(d) > reach2) continue;
+            const int pair = pair_index(a, out.elements[j].type);
+            if (squared_norm(d) < hard_core_[pair] * hard_core_[pair]) return false;  // closer than the exemplar ever is
             int lo = 0;
             const int c = sums.pair(d, lo, v);
-            const int slot = pair_index(a, out.elements[j].type);
-            for (int m = 0; m < c; ++m) w.add(slot * bins_ + lo + m, v[m]);
+            for (int m = 0; m < c; ++m) w.add(pair * bins_ + lo + m, v[m]);
         }
+        return true;
     };
     // One element: the best of kProposals keyed random steps, kept if it lowers the error
     // (against the sums at the start of the colour plus the tile's own changes).
@@ -257,8 +264,7 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
                 dir = {r * std::cos(angle), r * std::sin(angle), z};
             }
             const Vec3 q = p[i] + dir * (kStepSpacings * spacing_ * rng.uniform(3 * key + 2));
-            if (!domain.inside(q)) continue;
-            trial_delta(w, q, a);
+            if (!domain.inside(q) || !trial_delta(w, q, a)) continue;
             double change = 0.0;
             for (int at : w.touched) {
                 if (at % bins_ < first) continue;

@@ -8,7 +8,8 @@
 // pair (the standard estimator: Gaussian kernel, translation edge correction, up to five
 // spacings) closer to the exemplar's, and keeps a step only when it does (greedy descent on
 // sum_k (g_out(r_k) - g_ex(r_k))^2 over the class pairs, r_k >= the kernel width). Moves stay
-// inside the domain and below a quarter spacing per sweep; locked and held (floor)
+// inside the domain, never closer to a neighbour than the exemplar's closest pair of their
+// types, and below a quarter spacing per sweep; locked and held (floor)
 // elements stay. The crowding repair and the hole filling run after it.
 #pragma once
 
@@ -41,7 +42,8 @@ private:
     bool applies_ = false;
     int types_ = 0, bins_ = 0;
     double r_max_ = 0.0, bandwidth_ = 0.0, step_ = 0.0, spacing_ = 0.0;
-    std::vector<double> target_;  // per unordered class pair (a <= b) and bin: the exemplar's g
+    std::vector<double> target_;     // per unordered class pair (a <= b) and bin: the exemplar's g
+    std::vector<double> hard_core_;  // per unordered class pair: the exemplar's closest pair
     int pair_index(int a, int b) const;
 };
 
