@@ -4,6 +4,7 @@
 // compared with the exemplar's. Two references frame the figures: a uniform random
 // pattern of the same counts (what no structure scores) and a 2 x 2 tiling of the
 // exemplar itself (what a verbatim copy scores: the estimator's own edge effects).
+#include <algorithm>
 #include <chrono>
 #include <random>
 #include <cstdio>
@@ -53,42 +54,66 @@ Exemplar uniform_like(const Exemplar& like, std::uint64_t seed) {
 
 }  // namespace
 
+namespace {
+
+// The worst ratio over class pairs of the output's crowded share to the exemplar's.
+double worst_crowding(const Exemplar& ex, const Exemplar& out) {
+    double worst = 0.0;
+    for (const CrowdingPair& c : crowding(ex, out))
+        if (c.exemplar_share > 0.0) worst = std::max(worst, c.output_share / c.exemplar_share);
+    return worst;
+}
+
+// What one method's outputs score, as the mean (PCF error, time) or the worst (crowding,
+// hole) over the seeds.
+struct Scores {
+    double error = 0.0, crowding = 0.0, hole = 0.0, seconds = 0.0;
+    size_t count = 0;
+    void add(const Exemplar& ex, const Arrangement& out, double seconds_taken, double n) {
+        error += pcf_relative_error(ex, out) / n;
+        crowding = std::max(crowding, worst_crowding(ex, out));
+        hole = std::max(hole, largest_empty_circle(out).radius / largest_empty_circle(ex).radius);
+        seconds += seconds_taken / n;
+        count = out.elements.size();
+    }
+};
+
+}  // namespace
+
 void run_field_data_scenarios(const std::string& shared, int threads) {
     const std::vector<std::string> names = shared_datasets(shared);
     if (names.empty()) return;
     std::printf("\n| dataset | classes | input | output | det PCF error | pcf PCF error | uniform random | exemplar tiled 2 x 2 | "
-                "det s | pcf s |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+                "det crowding | pcf crowding | tiled crowding | det hole | pcf hole | tiled hole | det s | pcf s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string& name : names) {
         LoadOptions lo;
         lo.input_domain = parse_box_domain(window_of(shared, name), "window");
         const Exemplar ex = load(shared + "/points/" + name + ".csv", lo);
         const Domain domain = ex.domain.scaled(2.0);
-        double det_error = 0.0, pcf_error_sum = 0.0, det_seconds = 0.0, pcf_seconds = 0.0;
-        size_t output_count = 0;
+        Scores det, pcf;
         const std::vector<std::uint64_t> seeds = {1, 2, 3};
+        const double n = static_cast<double>(seeds.size());
         for (std::uint64_t seed : seeds) {
             DetOptions d;
             d.seed = seed;
             d.threads = threads;
             auto t0 = std::chrono::steady_clock::now();
             const Arrangement det_out = synthesize_det(ex, domain, d);
-            det_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            det_error += pcf_relative_error(ex, det_out);
-            output_count = det_out.elements.size();
+            det.add(ex, det_out, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), n);
             PcfSynthOptions p;
             p.seed = seed;
             p.threads = threads;
             t0 = std::chrono::steady_clock::now();
             const Arrangement pcf_out = synthesize_pcf(ex, domain, p);
-            pcf_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            pcf_error_sum += pcf_relative_error(ex, pcf_out);
+            pcf.add(ex, pcf_out, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), n);
         }
-        const double n = static_cast<double>(seeds.size());
-        std::printf("| %s | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", name.c_str(), ex.types.size(),
-                    ex.elements.size(), output_count, det_error / n, pcf_error_sum / n,
-                    pcf_relative_error(ex, uniform_like(tiled(ex, 2), 1)), pcf_relative_error(ex, tiled(ex, 2)), det_seconds / n,
-                    pcf_seconds / n);
+        const Exemplar copy = tiled(ex, 2);
+        std::printf("| %s | %zu | %zu | %zu | %.3f | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.3f | %.3f |\n",
+                    name.c_str(), ex.types.size(), ex.elements.size(), det.count, det.error, pcf.error,
+                    pcf_relative_error(ex, uniform_like(copy, 1)), pcf_relative_error(ex, copy), det.crowding,
+                    pcf.crowding, worst_crowding(ex, copy), det.hole, pcf.hole,
+                    largest_empty_circle(copy).radius / largest_empty_circle(ex).radius, det.seconds, pcf.seconds);
         std::fflush(stdout);
     }
 }
