@@ -16,6 +16,9 @@ namespace {
 // A count is met within max(1, 1%).
 long slack_of(long target) { return std::max<long>(1, std::lround(0.01 * static_cast<double>(target))); }
 
+// Types yield elements to the worst served one while their shortfall is this much smaller.
+constexpr double kYieldMargin = 0.02;
+
 }  // namespace
 
 int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
@@ -27,14 +30,22 @@ int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain
     std::vector<long> count(types, 0), target(types, 0);
     for (int t = 0; t < types; ++t) target[t] = std::lround(params.type_density[t] * domain.measure());
     for (const Element& e : out.elements) ++count[e.type];
+    // A type's relative shortfall against its count (negative above it).
+    const auto shortfall = [&](const std::vector<long>& c, int t) {
+        return static_cast<double>(target[t] - c[t]) / static_cast<double>(std::max<long>(1, target[t]));
+    };
+    // The types that may yield elements: those better served than the worst served by more
+    // than kYieldMargin (over their counts, or less short than it).
+    double worst = 0.0;
+    for (int t = 0; t < types; ++t)
+        if (count[t] < target[t] - slack_of(target[t])) worst = std::max(worst, shortfall(count, t));
     std::vector<char> over(types, 0);
-    bool any_over = false, any_under = false;
+    bool any_over = false;
     for (int t = 0; t < types; ++t) {
-        over[t] = count[t] > target[t];
+        over[t] = shortfall(count, t) < worst - kYieldMargin;
         any_over = any_over || over[t];
-        any_under = any_under || count[t] < target[t] - slack_of(target[t]);
     }
-    if (!any_over || !any_under) return 0;
+    if (!any_over || !(worst > 0.0)) return 0;
 
     // Room is measured among the elements of types not over their count; the others are
     // what an exchange may take out.
@@ -94,9 +105,13 @@ int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain
         });
         std::vector<long> after = count;
         for (int e : victims) --after[out.elements[e].type];
+        ++after[type];
+        // The exchange must narrow the gap: no yielding type ends up shorter than the type served.
         bool keeps = true;
-        for (int b = 0; b < types; ++b) keeps = keeps && (after[b] >= target[b] || after[b] == count[b]);
+        for (int b = 0; b < types; ++b)
+            keeps = keeps && (after[b] == count[b] || b == type || shortfall(after, b) < shortfall(after, type));
         if (!keeps) continue;
+        --after[type];
         const Quat frame = params.field.frame(c, dim);
         const int source = of_type[type][rng.below(static_cast<std::uint64_t>(-negative), of_type[type].size())];
         const Element& src = exemplar.elements[source];
@@ -107,7 +122,7 @@ int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain
         ++count[type];
         for (int s = 0; s < src.sample_count; ++s)
             room.add(out.samples[out.elements[index].first_sample + s].p, src.radius, type);
-        for (int t = 0; t < types; ++t) over[t] = count[t] > target[t];
+
         ++exchanged;
     }
     if (exchanged > 0) {
