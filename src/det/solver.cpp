@@ -157,6 +157,9 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         report(progress, {"relax", options.iterations, options.iterations, 0.0, seconds_since(t0)});
     }
     det::keep_inside_domain(state.arrangement, domain, params.dimension);
+    state.arrangement.update_positions();
+    if (det::drop_beyond_margin({state.arrangement, state.match, state.source_element}, exemplar, domain, params) > 0)
+        state.key = det::sample_keys(state.arrangement);
     {
         const core::CrowdingRepairReport fixed =
             keep_bounds(state, exemplar, domain, params, tails, repair, vacancies, options.iterations + 1);

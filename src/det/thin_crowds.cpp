@@ -24,6 +24,8 @@ namespace {
 
 constexpr double reach_in_spacings = 3.0;  // neighbours farther than this never crowd
 constexpr double close_quantile = 0.1;
+// An exemplar has an empty margin when no element comes nearer its boundary than this many spacings.
+constexpr double kMarginSpacings = 0.25;
 
 // A low quantile (close_quantile) of the distances from elements of type a to their
 // nearest element of type b (within the reach), per ordered pair (a, b) as
@@ -168,6 +170,37 @@ int remove_unresolved_crowding(Provenance of, const Domain& domain, const Params
     }
     if (removed > 0) keep_only(of, keep);
     return removed;
+}
+
+int drop_beyond_margin(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params) {
+    if (params.floor_constraints || exemplar.elements.empty()) return 0;  // a physical boundary: elements rest on it
+    // Per side of box windows (a lattice may leave a margin above its last row only), else
+    // one margin for the whole boundary.
+    const bool boxes = exemplar.domain.kind() == Domain::Kind::box && domain.kind() == Domain::Kind::box;
+    const Box in = exemplar.domain.bounds(), out = domain.bounds();
+    double margin[3][2] = {{INFINITY, INFINITY}, {INFINITY, INFINITY}, {INFINITY, INFINITY}};
+    double overall = INFINITY;
+    for (const Element& e : exemplar.elements) {
+        overall = std::min(overall, exemplar.domain.distance_to_boundary(e.position));
+        for (int k = 0; k < params.dimension; ++k) {
+            margin[k][0] = std::min(margin[k][0], e.position[k] - in.lo[k]);
+            margin[k][1] = std::min(margin[k][1], in.hi[k] - e.position[k]);
+        }
+    }
+    const double least = kMarginSpacings * params.spacing;
+    std::vector<char> keep(of.out.elements.size(), 1);
+    int dropped = 0;
+    for (size_t e = 0; e < keep.size(); ++e) {
+        const Element& el = of.out.elements[e];
+        if (el.locked) continue;
+        bool near = !boxes && overall > least && domain.distance_to_boundary(el.position) < 0.5 * overall;
+        for (int k = 0; boxes && k < params.dimension; ++k)
+            near = near || (margin[k][0] > least && el.position[k] - out.lo[k] < 0.5 * margin[k][0]) ||
+                   (margin[k][1] > least && out.hi[k] - el.position[k] < 0.5 * margin[k][1]);
+        if (near) keep[e] = 0, ++dropped;
+    }
+    if (dropped > 0) keep_only(of, keep);
+    return dropped;
 }
 
 }  // namespace tessera::det

@@ -184,9 +184,13 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
             const std::uint64_t key = static_cast<std::uint64_t>(-negative) * kCopiesTried + attempt;
             const int source = of_type[type][rng.below(key, of_type[type].size())];
             const Element& src = exemplar.elements[source];
+            // Inside, and no more than half its radius beyond the boundary: a hole between the
+            // last row and a wall too narrow for an element is not filled with half an element.
             bool inside = true;
-            for (int s = 0; s < src.sample_count && inside; ++s)
-                inside = domain.inside(frame.rotate(exemplar.samples[src.first_sample + s].p - src.position) + c);
+            for (int s = 0; s < src.sample_count && inside; ++s) {
+                const Vec3 q = frame.rotate(exemplar.samples[src.first_sample + s].p - src.position) + c;
+                inside = domain.inside(q) && (layered || domain.distance_to_boundary(q) >= 0.5 * src.radius);
+            }
             if (inside) added = append_copy(into, exemplar, source, frame, c - frame.rotate(src.position), dim);
         }
         if (added < 0) continue;  // nothing fits here
