@@ -67,36 +67,41 @@ EmptyBall largest_within(const ObstacleGrid& grid, const Domain& domain, int dim
         return box.lo + Vec3{(i % n[0] + 0.5) * step, (row % n[1] + 0.5) * step,
                              dimension == 3 ? (row / n[1] + 0.5) * step : 0.0};
     };
-    struct Best {
-        double radius = 0.0;
-        long index = -1;
-    };
-    std::vector<Best> per_thread(resolve_threads(threads));
+    // The kTop best lattice points (ties: lowest index), each refined by a pattern search:
+    // the largest ball's centre need not be near the best lattice point.
+    constexpr size_t kTop = 16;
+    using Ranked = std::pair<double, long>;  // (-radius, index): sorted best first
+    std::vector<std::vector<Ranked>> per_thread(resolve_threads(threads));
     parallel_for(n[2] * n[1], static_cast<int>(per_thread.size()), [&](int begin, int end, int t) {
+        std::vector<Ranked>& top = per_thread[t];
         for (long i = static_cast<long>(begin) * n[0]; i < static_cast<long>(end) * n[0]; ++i) {
             const double d = ball_clearance(grid, domain, centre(i), cap);
-            if (d > per_thread[t].radius) per_thread[t] = {d, i};
+            if (!(d > 0.0) || (top.size() == kTop && Ranked{-d, i} >= top.back())) continue;
+            top.insert(std::upper_bound(top.begin(), top.end(), Ranked{-d, i}), Ranked{-d, i});
+            if (top.size() > kTop) top.pop_back();
         }
     });
-    Best top;
-    for (const Best& b : per_thread)
-        if (b.radius > top.radius || (b.radius == top.radius && b.index >= 0 && (top.index < 0 || b.index < top.index)))
-            top = b;
+    std::vector<Ranked> top;
+    for (const auto& list : per_thread) top.insert(top.end(), list.begin(), list.end());
+    std::sort(top.begin(), top.end());
+    if (top.size() > kTop) top.resize(kTop);
     EmptyBall best;
-    if (top.index < 0) return best;
-    best = {top.radius, centre(top.index)};
-    for (double h = step; h > step * 1e-3; h *= 0.5) {
-        bool moved = true;
-        for (int guard = 0; moved && guard < 64; ++guard) {
-            moved = false;
-            for (int k = 0; k < dimension; ++k)
-                for (double sign : {-1.0, 1.0}) {
-                    Vec3 c = best.center;
-                    c[k] += sign * h;
-                    const double d = ball_clearance(grid, domain, c, cap);
-                    if (d > best.radius) best = {d, c}, moved = true;
-                }
+    for (const Ranked& r : top) {
+        EmptyBall ball{-r.first, centre(r.second)};
+        for (double h = step; h > step * 1e-3; h *= 0.5) {
+            bool moved = true;
+            for (int guard = 0; moved && guard < 64; ++guard) {
+                moved = false;
+                for (int k = 0; k < dimension; ++k)
+                    for (double sign : {-1.0, 1.0}) {
+                        Vec3 c = ball.center;
+                        c[k] += sign * h;
+                        const double d = ball_clearance(grid, domain, c, cap);
+                        if (d > ball.radius) ball = {d, c}, moved = true;
+                    }
+            }
         }
+        if (ball.radius > best.radius) best = ball;
     }
     return best;
 }

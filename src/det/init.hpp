@@ -39,7 +39,7 @@ int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, c
 
 // A hand-placed exemplar or a lattice may keep all its elements away from its window's
 // boundary or one side of it (an empty margin, more than a quarter spacing wide): output
-// elements nearer the domain's boundary (that side, for boxes) than half that margin are removed (they show a partial row along a wall
+// elements nearer the domain's boundary (that side, for boxes) than a quarter of that margin are removed (they show a partial row along a wall
 // the exemplar never has). Not with floor constraints. Returns how many.
 int drop_beyond_margin(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params);
 

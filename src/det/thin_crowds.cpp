@@ -26,6 +26,8 @@ constexpr double reach_in_spacings = 3.0;  // neighbours farther than this never
 constexpr double close_quantile = 0.1;
 // An exemplar has an empty margin when no element comes nearer its boundary than this many spacings.
 constexpr double kMarginSpacings = 0.25;
+// Output elements nearer a side than this share of the exemplar's margin there are dropped.
+constexpr double kMarginShare = 0.25;
 
 // A low quantile (close_quantile) of the distances from elements of type a to their
 // nearest element of type b (within the reach), per ordered pair (a, b) as
@@ -193,10 +195,10 @@ int drop_beyond_margin(Provenance of, const Exemplar& exemplar, const Domain& do
     for (size_t e = 0; e < keep.size(); ++e) {
         const Element& el = of.out.elements[e];
         if (el.locked) continue;
-        bool near = !boxes && overall > least && domain.distance_to_boundary(el.position) < 0.5 * overall;
+        bool near = !boxes && overall > least && domain.distance_to_boundary(el.position) < kMarginShare * overall;
         for (int k = 0; boxes && k < params.dimension; ++k)
-            near = near || (margin[k][0] > least && el.position[k] - out.lo[k] < 0.5 * margin[k][0]) ||
-                   (margin[k][1] > least && out.hi[k] - el.position[k] < 0.5 * margin[k][1]);
+            near = near || (margin[k][0] > least && el.position[k] - out.lo[k] < kMarginShare * margin[k][0]) ||
+                   (margin[k][1] > least && out.hi[k] - el.position[k] < kMarginShare * margin[k][1]);
         if (near) keep[e] = 0, ++dropped;
     }
     if (dropped > 0) keep_only(of, keep);
