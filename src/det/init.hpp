@@ -37,10 +37,10 @@ InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index,
 int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params,
                 double hole_radius = 0.0, double crowded_below = 1.0, double allowance = 0.0);
 
-// A hand-placed exemplar or a lattice may keep all its elements away from its window's
-// boundary or one side of it (an empty margin, more than a quarter spacing wide): output
-// elements nearer the domain's boundary (that side, for boxes) than a quarter of that margin are removed (they show a partial row along a wall
-// the exemplar never has). Not with floor constraints. Returns how many.
+// A hand-placed exemplar or a lattice may keep all its elements away from a side of its box
+// window (an empty margin, more than a quarter spacing wide): output elements nearer that
+// side of a box domain than a quarter of that margin are removed (they show a partial row along a wall
+// the exemplar never has). Not with floor constraints or layered exemplars. Returns how many.
 int drop_beyond_margin(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params);
 
 // Removes elements the crowding repair could not separate (core::crowded_pairs after it),

@@ -5,6 +5,7 @@
 
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
+#include "det/layers.hpp"
 #include "det/provenance.hpp"
 
 namespace tessera::det {
@@ -129,7 +130,9 @@ std::vector<double> sum_to_g(const std::vector<long>& count, int types, int bins
 int PairRelaxation::pair_index(int a, int b) const { return slot_of(a, b, types_); }
 
 PairRelaxation::PairRelaxation(const Exemplar& exemplar, const Params& params) {
-    applies_ = !exemplar.has_multi_sample_elements() && exemplar.elements.size() >= 8 && params.spacing > 0.0;
+    // Not for layers: a layer's statistics live in its plane, not in the 3D pair correlation.
+    applies_ = !exemplar.has_multi_sample_elements() && exemplar.elements.size() >= 8 && params.spacing > 0.0 &&
+               !layer_axes(exemplar.domain.bounds(), exemplar.dimension, params.radius).any;
     if (!applies_) return;
     types_ = static_cast<int>(exemplar.types.size());
     bins_ = kBins;

@@ -1,5 +1,5 @@
 // The pair correlation relaxation: a last solver step (section 5's "extra solver steps")
-// for exemplars of single-sample elements. Patch seams put elements at distances the
+// for exemplars of single-sample elements that are not layers. Patch seams put elements at distances the
 // exemplar's statistics do not have, and the least-squares assignment (Eq. 4) averages the
 // predictions of several neighbourhoods, which draws distances towards the typical ones;
 // on field data both left the output's pair correlation 4 to 5 times further from the

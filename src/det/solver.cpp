@@ -11,6 +11,7 @@
 #include "det/floor.hpp"
 #include "det/init.hpp"
 #include "det/input_index.hpp"
+#include "det/layers.hpp"
 #include "det/pair_relaxation.hpp"
 #include "det/type_exchange.hpp"
 #include "det/vacancies.hpp"
@@ -55,6 +56,10 @@ core::CrowdingRepairReport keep_bounds(det::OutputState& state, const Exemplar& 
     state.arrangement.update_positions();
     vacancies.reach_count = false;
     vacancies.round = static_cast<std::uint64_t>(round);
+    // A layer's elements (bricks in a wall) are often longer than their radius along the
+    // layer: the gaps between them in a row look like holes to a ball, and filling them
+    // after each iteration jumbled the courses. Layers are filled once, at initialization.
+    if (det::layer_axes(exemplar.domain.bounds(), params.dimension, params.radius).any) vacancies.hole_radius = 0.0;
     int added = det::fill_vacancies(provenance, exemplar, domain, params, tails, vacancies).added;
     // What the filled holes add beyond 1% over the counts is taken back where elements crowd
     // most, if that opens no hole (the counts are estimates: a lattice may hold a few more).
@@ -86,7 +91,7 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     // The exemplar's close-distance tails bound the output's (core/crowding_repair.hpp), and
     // its largest hole the output's (det/vacancies.hpp).
     const core::CrowdingBounds tails(exemplar);
-    const double hole_radius = kHoleTolerance * det::exemplar_hole_radius(exemplar, params.spacing);
+    const double hole_radius = kHoleTolerance * det::exemplar_hole_radius(exemplar, params.spacing, params.radius);
     init.thinned = det::thin_crowds(init.provenance(), exemplar, domain, params);
     det::VacancySettings vacancies;
     vacancies.hole_radius = hole_radius;

@@ -18,6 +18,7 @@
 
 #include "core/spatial_grid.hpp"
 #include "det/init.hpp"
+#include "det/layers.hpp"
 
 namespace tessera::det {
 namespace {
@@ -97,8 +98,10 @@ int thin_crowds(Provenance of, const Exemplar& exemplar, const Domain& domain, c
 
     // The hole an element leaves: the largest clearance among the elements kept, found by a
     // pattern search from its place (the hole's centre need not be the element's).
+    // (For a layered exemplar the walls of the thin axis do not bound a hole: see vacancies.hpp.)
+    const bool layered = layer_axes(exemplar.domain.bounds(), dim, params.radius).any;
     auto clearance_without = [&](int i, const Vec3& c) {
-        double clearance = std::min(reach, domain.distance_to_boundary(c));
+        double clearance = layered ? (domain.inside(c) ? reach : -1.0) : std::min(reach, domain.distance_to_boundary(c));
         grid.for_each_within(c, reach, [&](int j, double d2) {
             if (j != i && keep[j]) clearance = std::min(clearance, std::sqrt(d2) - out.elements[j].radius);
         });
@@ -175,28 +178,27 @@ int remove_unresolved_crowding(Provenance of, const Domain& domain, const Params
 }
 
 int drop_beyond_margin(Provenance of, const Exemplar& exemplar, const Domain& domain, const Params& params) {
-    if (params.floor_constraints || exemplar.elements.empty()) return 0;  // a physical boundary: elements rest on it
-    // Per side of box windows (a lattice may leave a margin above its last row only), else
-    // one margin for the whole boundary.
-    const bool boxes = exemplar.domain.kind() == Domain::Kind::box && domain.kind() == Domain::Kind::box;
+    // Box windows and box outputs only (a margin is a distance to a side; other shapes answer
+    // distances conservatively), not layers (their thin axis is all margin), not physical
+    // boundaries (floor constraints: elements rest on them).
+    if (params.floor_constraints || exemplar.elements.empty() || exemplar.domain.kind() != Domain::Kind::box ||
+        domain.kind() != Domain::Kind::box || layer_axes(exemplar.domain.bounds(), params.dimension, params.radius).any)
+        return 0;
     const Box in = exemplar.domain.bounds(), out = domain.bounds();
     double margin[3][2] = {{INFINITY, INFINITY}, {INFINITY, INFINITY}, {INFINITY, INFINITY}};
-    double overall = INFINITY;
-    for (const Element& e : exemplar.elements) {
-        overall = std::min(overall, exemplar.domain.distance_to_boundary(e.position));
+    for (const Element& e : exemplar.elements)
         for (int k = 0; k < params.dimension; ++k) {
             margin[k][0] = std::min(margin[k][0], e.position[k] - in.lo[k]);
             margin[k][1] = std::min(margin[k][1], in.hi[k] - e.position[k]);
         }
-    }
     const double least = kMarginSpacings * params.spacing;
     std::vector<char> keep(of.out.elements.size(), 1);
     int dropped = 0;
     for (size_t e = 0; e < keep.size(); ++e) {
         const Element& el = of.out.elements[e];
         if (el.locked) continue;
-        bool near = !boxes && overall > least && domain.distance_to_boundary(el.position) < kMarginShare * overall;
-        for (int k = 0; boxes && k < params.dimension; ++k)
+        bool near = false;
+        for (int k = 0; k < params.dimension; ++k)
             near = near || (margin[k][0] > least && el.position[k] - out.lo[k] < kMarginShare * margin[k][0]) ||
                    (margin[k][1] > least && out.hi[k] - el.position[k] < kMarginShare * margin[k][1]);
         if (near) keep[e] = 0, ++dropped;

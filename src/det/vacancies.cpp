@@ -90,18 +90,30 @@ int choose_type(const core::ObstacleGrid& grid, const core::CrowdingBounds& tail
 
 }  // namespace
 
-double exemplar_hole_radius(const Exemplar& exemplar, double spacing) {
+double exemplar_hole_radius(const Exemplar& exemplar, double spacing, double radius) {
+    if (exemplar.samples.empty() || !(spacing > 0.0)) return 0.0;
+    // A layer (a 3D exemplar thin along one axis, in a box): its holes are in the layer, and the
+    // walls of the thin axis must not bound their size, so they are measured in the plane of
+    // the two other axes.
+    const Box b = exemplar.domain.bounds();
+    const LayerAxes layer = layer_axes(b, exemplar.dimension, radius);
+    int thin = -1, thin_count = 0;
+    for (int k = 0; k < exemplar.dimension; ++k)
+        if (layer.thin[k]) thin = k, ++thin_count;
+    const bool in_plane = exemplar.dimension == 3 && thin_count == 1 && exemplar.domain.kind() == Domain::Kind::box;
+    int axes[3] = {0, 1, 2};
+    if (in_plane) axes[0] = (thin + 1) % 3, axes[1] = (thin + 2) % 3;
+    const int dim = in_plane ? 2 : exemplar.dimension;
     std::vector<Vec3> p;
     std::vector<double> rim;
     for (const Sample& s : exemplar.samples) {
-        Vec3 q = s.p;
-        if (exemplar.dimension == 2) q.z = 0.0;
-        p.push_back(q);
+        p.push_back(Vec3{s.p[axes[0]], s.p[axes[1]], dim == 3 ? s.p[axes[2]] : 0.0});
         rim.push_back(exemplar.elements[s.element].radius);
     }
-    if (p.empty() || !(spacing > 0.0)) return 0.0;
-    const double step = spacing / (exemplar.dimension == 2 ? 5.0 : 3.0);
-    return core::largest_empty_ball(p, rim, exemplar.domain, exemplar.dimension, step, 1).radius;
+    const Domain domain = in_plane ? Domain::box({b.lo[axes[0]], b.lo[axes[1]], 0}, {b.hi[axes[0]], b.hi[axes[1]], 0}, 2)
+                                   : exemplar.domain;
+    const double step = spacing / (dim == 2 ? 5.0 : 3.0);
+    return core::largest_empty_ball(p, rim, domain, dim, step, 1).radius;
 }
 
 VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Domain& domain, const Params& params,

@@ -46,7 +46,8 @@ std::vector<Vec3> vacancy_candidates(const Domain& domain, int dimension, double
 std::vector<Vec3> lattice_inside(const Domain& domain, int dimension, double step);
 
 // The largest empty ball of the exemplar in its own window (rim to rim): the size of hole
-// the exemplar itself shows, against which output holes are judged.
-double exemplar_hole_radius(const Exemplar& exemplar, double spacing);
+// the exemplar itself shows, against which output holes are judged. A layered exemplar
+// (thinner than 2 x radius along one axis) is measured in the plane of its layer.
+double exemplar_hole_radius(const Exemplar& exemplar, double spacing, double radius);
 
 }  // namespace tessera::det
