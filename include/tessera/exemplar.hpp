@@ -33,15 +33,16 @@ struct ElementType {
     bool rigid = true;    // rigid elements keep the exact shape of an input element
     bool floor = false;   // floor elements (used by constrained selection, later)
     std::string mesh;     // optional mesh file (OBJ / ASCII PLY) for rebuilding geometry (geometry.hpp)
-    // Optional colour of the type in pictures: "#rrggbb", "#rgb" or a colour name
-    // (render.hpp, parse_color); empty = its name when that is a colour, else the palette.
-    std::string color;
     // Optional reference sample layout in the mesh's local frame (geometry.hpp); empty =
     // derived from the first element of the type. Required for deformable types with a mesh.
     std::vector<Vec3> reference;
     // Classes this one depends on in the PCF method's dependency graph (pcf_synthesis.hpp),
     // by name; unset = every earlier type; an empty list = none (an independent class).
     std::optional<std::vector<std::string>> depends_on;
+    // Optional colour of the type in pictures: "#rrggbb", "#rgb" or a colour name
+    // (render.hpp, parse_color); empty = its name when that is a colour, else the palette.
+    // Last, so that brace initialisations of the fields above stay valid.
+    std::string color;
 };
 
 struct Element {

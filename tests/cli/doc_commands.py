@@ -2,18 +2,19 @@
 """Runs every shell command of the documentation as a user would paste it.
 
 Extracts the fenced ```sh / ```shell / ```bash blocks of README.md and docs/*.md and runs
-each file's commands in order, in one bash process, from a fresh temporary directory that
+each file's blocks verbatim and in order, in one bash process (set -e: the first command
+that fails stops the file and is reported with its block), from a fresh temporary directory that
 looks like the repository root after `make build`: symlinks to the repository's examples/,
 tests/data/, integrations/, scripts/ and the build directory as build/ (so outputs land in
 the temporary directory, never in the repository). A command fails the test when it exits
-non-zero. Continuation lines (ending in a backslash) are joined; comment lines are skipped.
+non-zero.
 
 Not run:
   - a block right after the line `<!-- docs-test: skip (REASON) -->` (the few commands that
     are deliberately not runnable here, such as `make test`, which is this test's suite);
   - `make build`, which the build under test has already done;
-  - commands starting with `blender` when Blender is not installed (they run it headless,
-    with --background, when it is; no command needs a display).
+  - blocks with a command starting with `blender` when Blender is not installed (it runs
+    headless, with --background, when it is; no documented command needs a display).
 
 Usage: doc_commands.py SOURCE_DIR BUILD_DIR
 """
@@ -55,7 +56,8 @@ def blocks(path):
 
 
 def commands(body):
-    """The commands of a block: continuation lines joined, comments and blanks dropped."""
+    """The commands of a block (for counting and skipping): continuation lines joined,
+    comments and blanks dropped. The block itself runs verbatim."""
     out, current = [], ""
     for line in body:
         stripped = line.strip()
@@ -87,19 +89,19 @@ def main():
     has_blender = shutil.which("blender") is not None
     failures, ran = [], 0
     for doc in files:
-        script = ["set -u"]
+        # Each block verbatim (quoted strings may span lines), in order, in one bash: a
+        # command that fails stops the file and names its block.
+        script = ["set -eE -o pipefail", "trap 'echo \"FAILED ($BLOCK): $BASH_COMMAND\" >&2; exit 1' ERR"]
         for line_number, body in blocks(doc):
-            for command in commands(body):
-                if command == "make build":
-                    continue
-                if command.startswith("blender") and not has_blender:
-                    print("skipped (no blender): %s" % command)
-                    continue
-                where = "%s:%d" % (doc.relative_to(source), line_number)
-                script.append("echo %s >&2" % shlex_quote("$ " + command))
-                script.append("( %s ) || { echo %s >&2; exit 1; }" % (command, shlex_quote("FAILED (" + where + "): " + command)))
-                ran += 1
-        if len(script) == 1:
+            listed = commands(body)
+            if any(c.startswith("blender") for c in listed) and not has_blender:
+                print("skipped (no blender): %s:%d" % (doc.relative_to(source), line_number))
+                continue
+            where = "%s:%d" % (doc.relative_to(source), line_number)
+            script.append("BLOCK=%s; echo %s >&2" % (shlex_quote(where), shlex_quote("== " + where)))
+            script.extend(line for line in body if line.strip() != "make build")
+            ran += sum(1 for c in listed if c != "make build")
+        if len(script) == 2:
             continue
         root = sandbox(source, build)
         try:

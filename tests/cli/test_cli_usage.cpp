@@ -64,7 +64,7 @@ TEST_F(CliUsage, IntegerOptionsTakeAnyDecimalNotationOfAnInteger) {
     // The same run written three ways gives byte-identical output.
     const std::string synth = "synth " + q(example("poisson_disk_2d.json")) + " --scale 1.5 -q ";
     std::string first;
-    for (const std::string& notation : {"--iterations 2 --seed 7", "--iterations 2e0 --seed 7.0",
+    for (const char* notation : {"--iterations 2 --seed 7", "--iterations 2e0 --seed 7.0",
                                         "--iterations 2.000 --seed 0.7e1"}) {
         SCOPED_TRACE(notation);
         const Result r = run(synth + notation + " -o " + q(path("out.json")));

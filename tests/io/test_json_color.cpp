@@ -41,7 +41,7 @@ TEST(JsonColor, AbsentColorIsNotWritten) {
 }
 
 TEST(JsonColor, UnreadableColorNamesFileAndPath) {
-    for (const std::string& bad : {R"("blurple")", R"("#12345")", "12", R"("")"}) {
+    for (const std::string bad : {R"("blurple")", R"("#12345")", "12", R"("")"}) {
         SCOPED_TRACE(bad);
         try {
             parse_json(document(R"([{"name": "banana"}, {"name": "leaf", "color": )" + bad + "}]"), "c.json");
