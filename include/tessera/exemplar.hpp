@@ -41,8 +41,9 @@ struct ElementType {
     std::optional<std::vector<std::string>> depends_on;
     // Optional colour of the type in pictures: "#rrggbb", "#rgb" or a colour name
     // (render.hpp, parse_color); empty = its name when that is a colour, else the palette.
-    // Last, so that brace initialisations of the fields above stay valid.
-    std::string color;
+    // Last and with an initializer, so that brace initialisations of the fields above stay
+    // valid and warning-free.
+    std::string color = {};
 };
 
 struct Element {
