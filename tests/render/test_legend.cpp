@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "render/class_colors.hpp"
 #include "render/legend.hpp"
 #include "render/render_test_util.hpp"
 #include "render/style.hpp"
