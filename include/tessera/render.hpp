@@ -68,9 +68,10 @@ std::string render_svg(const Exemplar& data, const RenderOptions& options = {});
 // faces meet at more than 40 degrees, so spheres and tubes look round and boxes keep
 // flat faces with crisp edges. 2D: seen from above (x right, y up) at the pixel scale
 // of render_png, lit from the upper left so the meshes read as relief; parts outside
-// that frame are cut off. Colours by SceneInstance::type, an index into data.types.
-// Throws Error(input) for data render_png cannot draw, an instance naming a mesh the
-// scene does not have or a type the data do not have, Error(option) for a bad width.
+// that frame are cut off. Colours by SceneInstance::type: the colour of that type of
+// `data` (type_colors), the palette for types beyond data's. Throws Error(input) for data
+// render_png cannot draw or an instance naming a mesh the scene does not have,
+// Error(option) for a bad width.
 std::string render_scene_png(const Exemplar& data, const Scene& scene, const RenderOptions& options = {});
 // Writes .png or .svg by extension, atomically. A .png shows the element meshes
 // (build_scene, render_scene_png) when options.meshes is on, or automatic and some type

@@ -43,6 +43,15 @@ Rgb shade_relief(Rgb base, const Vec3& n) {
     return toward_white(base, static_cast<float>(std::min(1.0, lit - 1.0)));
 }
 
+// The colour of every type an instance names: the data's type colours (type_colors), and
+// the palette for scene types beyond the data's.
+std::vector<Rgb> scene_colors(const Exemplar& data, const Scene& scene) {
+    std::vector<Rgb> colors = class_colors(data);
+    for (const SceneInstance& instance : scene.instances)
+        while (instance.type >= static_cast<int>(colors.size())) colors.push_back(class_color(static_cast<int>(colors.size())));
+    return colors;
+}
+
 std::string render_scene_3d(const Exemplar& data, const Scene& scene, const RenderOptions& options) {
     const View3D view = View3D::standard();
     // Framed like the sphere preview, with the corners of the meshes' bounds standing
@@ -53,7 +62,7 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
         for (const auto& [a, b] : box_edges(bounds))
             for (const Vec3& corner : {a, b}) extent.push_back({corner, 0.0, 0, false});
     const Frame3D frame = make_frame_3d(data, extent, view, options);
-    const std::vector<Rgb> colors = class_colors(data);
+    const std::vector<Rgb> colors = scene_colors(data, scene);
     const Legend legend = make_legend(data, colors, frame.width, options);
     check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     const int ss = supersampling(frame.width, frame.height, MeshRaster::bytes_per_pixel + sizeof(Rgb));
@@ -66,7 +75,7 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
     for (size_t i = 0; i < color.size(); ++i) {
         const int tag = raster.tag(i);
         if (tag < 0) continue;
-        color[i] = shade_sphere(colors[scene.instances[tag].type], sample_normal(raster, i),
+        color[i] = shade_sphere(colors[std::max(0, scene.instances[tag].type)], sample_normal(raster, i),
                                 (frame.near - raster.depth(i)) / depth_range);
     }
     if (options.show_domain)
@@ -79,7 +88,7 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
 
 std::string render_scene_2d(const Exemplar& data, const Scene& scene, const RenderOptions& options) {
     const Frame2D frame = make_frame_2d(data, make_style(data), options);
-    const std::vector<Rgb> colors = class_colors(data);
+    const std::vector<Rgb> colors = scene_colors(data, scene);
     const Legend legend = make_legend(data, colors, frame.width, options);
     check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     Canvas canvas(frame.width, frame.height, white);
@@ -104,7 +113,7 @@ std::string render_scene_2d(const Exemplar& data, const Scene& scene, const Rend
                     const int tag = raster.tag(k);
                     if (tag < 0) continue;
                     const Rgb c =
-                        shade_relief(colors[scene.instances[tag].type], sample_normal(raster, k));
+                        shade_relief(colors[std::max(0, scene.instances[tag].type)], sample_normal(raster, k));
                     sum.r += c.r, sum.g += c.g, sum.b += c.b;
                     ++covered;
                 }
@@ -125,7 +134,7 @@ std::string render_scene_2d(const Exemplar& data, const Scene& scene, const Rend
 std::string render_scene_png(const Exemplar& data, const Scene& scene, const RenderOptions& options) {
     render::check_options(options);
     render::check_drawable(data);
-    render::check_scene(scene, data.dimension, static_cast<int>(data.types.size()));
+    render::check_scene(scene, data.dimension);
     return data.dimension == 2 ? render::render_scene_2d(data, scene, options)
                                : render::render_scene_3d(data, scene, options);
 }

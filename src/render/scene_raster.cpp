@@ -46,7 +46,7 @@ Vec3 unit_or_zero(const Vec3& v) {
 
 }  // namespace
 
-void check_scene(const Scene& scene, int dimension, int type_count) {
+void check_scene(const Scene& scene, int dimension) {
     if (scene.dimension != dimension)
         throw Error(ErrorKind::input, "render: the scene is " + std::to_string(scene.dimension) +
                                           "D but the data are " + std::to_string(dimension) + "D");
@@ -55,10 +55,6 @@ void check_scene(const Scene& scene, int dimension, int type_count) {
         if (m < 0 || m >= static_cast<int>(scene.meshes.size()))
             throw Error(ErrorKind::input, "render: scene instance " + std::to_string(i) + " refers to mesh " +
                                               std::to_string(m) + ", which the scene does not have");
-        const int t = scene.instances[i].type;
-        if (t < 0 || t >= type_count)
-            throw Error(ErrorKind::input, "render: scene instance " + std::to_string(i) + " is of type " +
-                                              std::to_string(t) + ", which the data do not have");
     }
 }
 

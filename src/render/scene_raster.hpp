@@ -20,10 +20,9 @@ struct ScreenMap {
     double scale = 1.0;         // raster pixels per data unit
 };
 
-// Throws Error(input) when an instance names a mesh the scene does not have or a type
-// outside [0, type_count) (the types of the data it is drawn with), or when the scene's
-// dimension differs from `dimension`.
-void check_scene(const Scene& scene, int dimension, int type_count);
+// Throws Error(input) when an instance names a mesh the scene does not have, or when
+// the scene's dimension differs from `dimension`.
+void check_scene(const Scene& scene, int dimension);
 
 // Bounds of every finite world-space vertex of the instances; lo > hi when there is none.
 Box scene_bounds(const Scene& scene);

@@ -116,7 +116,7 @@ TEST(Render2d, SingleElementAndOptionErrors) {
     Exemplar one;
     one.domain = Domain::box({0, 0, 0}, {4, 2, 0}, 2);
     one.add_element(one.type_index("a"), {Vec3{2, 1, 0}});
-    const auto img = test::decode_png(render_png(one, {.width = 200}));
+    const auto img = test::decode_png(render_png(one, {.width = 200, .show_legend = false}));
     ASSERT_EQ(img.width, 200);
     EXPECT_LE(test::color_distance(img.at(100, img.height / 2), render::class_color(0)), 1);
     try {
