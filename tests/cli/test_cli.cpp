@@ -41,7 +41,8 @@ TEST_F(CliSynth, WritesJsonCsvPlyAndPreview) {
                              " --scale 1.5 --iterations 2 --seed 3 --preview " + q(preview));
         ASSERT_EQ(r.code, 0) << r.err;
         EXPECT_EQ(r.out, "");
-        EXPECT_NE(r.err.find("iteration 1/2  energy "), std::string::npos) << r.err;
+        // Progress is rate-limited: the set-up stage and the last iteration are always shown.
+        EXPECT_NE(r.err.find("init  elapsed "), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("iteration 2/2  energy "), std::string::npos) << r.err;
         EXPECT_NE(r.err.find(" s\n"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("done: "), std::string::npos) << r.err;
@@ -80,7 +81,7 @@ TEST_F(CliSynth, PcfMethod) {
         GTEST_SKIP() << "the PCF analysis is not in this build";
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("(method pcf, seed 2, at most 3 sweeps per class)"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("sweep 1/5  energy "), std::string::npos) << r.err;  // 3 + 2 outlier rounds of 1
+    EXPECT_NE(r.err.find("\nsweep "), std::string::npos) << r.err;  // rate-limited: at least the last sweep
     EXPECT_NE(r.err.find("done: "), std::string::npos) << r.err;
     const tessera::Exemplar output = tessera::load(path("out.json"));
     expect_count_near(output.elements.size(), input.elements.size() * 1.2 * 1.2);

@@ -46,10 +46,17 @@ TEST_P(CliRenderErrors, NameTheOptionAtFaultAndWriteNothing) {
 }
 
 const std::string dots = "'{ex}poisson_disk_2d.json' ";
-// A domain 100 times taller than wide: an 800 pixel wide picture would be 80,000 tall.
-const std::string tall =
-    R"({"format": "tessera", "version": 1, "dimension": 2, "domain": {"type": "box", "min": [0, 0], "max": [1, 100]},
-        "elements": [{"position": [0.5, 10]}, {"position": [0.5, 60]}]})";
+// A column of 100 points spaced 1 apart in a domain 100 times taller than wide: with the
+// frame's margins (3% of the taller side), a 1200 pixel wide picture would be about 18,000
+// pixels tall.
+std::string tall_column() {
+    std::string elements;
+    for (int k = 0; k < 100; ++k)
+        elements += std::string(k ? ", " : "") + "{\"position\": [0.5, " + std::to_string(k + 0.5) + "]}";
+    return R"({"format": "tessera", "version": 1, "dimension": 2, "domain": {"type": "box", "min": [0, 0], "max": [1, 100]},
+        "elements": [)" + elements + "]}";
+}
+const std::string tall = tall_column();
 
 // clang-format off
 const RenderErrorCase render_error_cases[] = {
@@ -59,9 +66,9 @@ const RenderErrorCase render_error_cases[] = {
     {"width_zero", "", "", dots + "-o '{work}/p.png' --width 0", 2, {"--width", "16 and 16384", "got 0"}, {"--meshes"}},
     {"width_too_large", "", "", dots + "-o '{work}/p.png' --width 1e5", 2, {"--width", "got 100000"}, {}},
     {"width_not_integral", "", "", dots + "-o '{work}/p.png' --width 1e-1", 2, {"--width", "not an integer"}, {}},
-    {"picture_too_tall", "tall.json", tall, "'{work}/tall.json' -o '{work}/p.png'", 2, {"--width", "pixels tall"}, {"--meshes"}},
-    {"svg_too_tall", "tall.json", tall, "'{work}/tall.json' -o '{work}/p.svg'", 2, {"--width", "pixels tall"}, {}},
-    {"too_many_pixels", "", "", dots + "-o '{work}/p.png' --width 16384", 2, {"--width", "too large"}, {}},
+    {"picture_too_tall", "tall.json", tall, "'{work}/tall.json' -o '{work}/p.png' --width 1200", 2, {"--width", "pixels tall"}, {"--meshes"}},
+    {"svg_too_tall", "tall.json", tall, "'{work}/tall.json' -o '{work}/p.svg' --width 1200", 2, {"--width", "pixels tall"}, {}},
+    {"too_many_pixels", "", "", dots + "-o '{work}/p.png' --width 12000", 2, {"--width", "too large"}, {}},
     {"bad_extension", "", "", dots + "-o '{work}/p.jpg'", 2, {"-o", "p.jpg", ".jpg"}, {"--width", "--meshes"}},
     {"missing_output", "", "", dots, 2, {"--output"}, {"--width"}},
     {"missing_input", "", "", "'{work}/none.json' -o '{work}/p.png'", 5, {"none.json"}, {"--width"}},
