@@ -11,6 +11,9 @@ import os
 import random
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# Colours of the classes in pictures ("color" of a type, docs/format.md) where the name is not
+# a colour already; CSS's "plum" is a pale lilac, so the plums get the fruit's dark purple.
+PLUM = "#6a3d7a"
 
 
 def write(name, dimension, domain_max, types, elements, description):
@@ -63,7 +66,7 @@ def hex_jittered_2d():
             y = (j + 0.5) * a * math.sqrt(3) / 2 + rng.gauss(0, 0.05 * a)
             if 0 <= x <= 10 and 0 <= y <= 10:
                 els.append({"type": "plum", "position": [r4(x), r4(y)], "radius": 0.45})
-    write("hex_jittered_2d", 2, [10, 10], [{"name": "plum"}], els,
+    write("hex_jittered_2d", 2, [10, 10], [{"name": "plum", "color": PLUM}], els,
           "Hexagonal lattice of spacing 1 with Gaussian jitter (sd 0.05) in a 10 x 10 box.")
 
 
@@ -79,7 +82,8 @@ def two_class_2d():
         if all(math.dist(p, q) >= 1.15 for q in big) and all(math.dist(p, q) >= 0.55 for q in small):
             small.append(p)
     els += [{"type": "pebble", "position": [r4(x), r4(y)], "radius": 0.22} for x, y in small]
-    write("two_class_2d", 2, [10, 10], [{"name": "stone"}, {"name": "pebble"}], els,
+    write("two_class_2d", 2, [10, 10], [{"name": "stone", "color": "#8a8580"}, {"name": "pebble", "color": "#c9a66b"}],
+          els,
           "Two classes: large stones (inhibition 2.0) and pebbles kept off the stones, in a 10 x 10 box.")
 
 
@@ -101,7 +105,7 @@ def sticks_2d():
             continue
         placed.append(pts)
         els.append({"type": "stick", "samples": [[r4(x), r4(y)] for x, y in pts]})
-    write("sticks_2d", 2, [10, 10], [{"name": "stick", "rigid": True}], els,
+    write("sticks_2d", 2, [10, 10], [{"name": "stick", "rigid": True, "color": "#a0703c"}], els,
           "Rigid sticks of 5 samples (length 1.2), mostly horizontal; centroids in a 10 x 10 window "
           "of a periodic pattern, so sticks may reach past the window's sides.")
 
@@ -213,7 +217,7 @@ def plum_stack_2d():
             y = 0.5 + row * 0.866 + (0.0 if row == 0 else rng.gauss(0, 0.03))
             if x <= 11.8:
                 els.append({"type": "plum", "position": [r4(x), r4(y)], "radius": 0.5})
-    write("plum_stack_2d", 2, [12, 4.5], [{"name": "plum"}], els,
+    write("plum_stack_2d", 2, [12, 4.5], [{"name": "plum", "color": PLUM}], els,
           "Plums stacked in hexagonal rows on a floor (y = 0); the bottom row rests on it.")
 
 

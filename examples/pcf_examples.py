@@ -16,6 +16,17 @@ import random
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pcf")
 
 
+# Colours of the classes in pictures ("color" of a type, docs/format.md) where the name is
+# not a colour already (clustered_four's classes are named after theirs).
+COLORS = {
+    "tree": "#2e7d32", "mushroom": "#b5651d", "grass": "#9acd32",
+    "large": "#1f4e79", "medium": "#2e75b6", "small": "#5b9bd5", "tiny": "#9dc3e6",
+    "plate": "#c8c2b4", "bowl": "#7fa7c4", "glass": "#a8dcea", "food": "#c76b29", "candy": "#e0529c",
+    "oak": "#556b2f", "pine": "#1b4d3e", "birch": "#d8cfa8", "hazel": "#8e6b3e", "holly": "#b22222",
+    "fern": "#4f9a3f", "heather": "#9b5f9e", "moss": "#8a9a5b",
+}
+
+
 def r4(v):
     return round(v, 4)
 
@@ -51,6 +62,8 @@ class Scene:
         types = []
         for c in classes:
             t = {"name": c}
+            if c in COLORS:
+                t["color"] = COLORS[c]
             if depends is not None and c in depends:
                 t["depends_on"] = depends[c]
             types.append(t)

@@ -16,6 +16,9 @@ import random
 import scene_meshes as sm
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scenes")
+# Colours of the classes in pictures ("color" of a type, docs/format.md).
+PLUM = "#6a3d7a"
+PEBBLES = ["#8c8279", "#b5a690", "#6f6a64"]  # greys and sandstone
 MESHES = os.path.join(HERE, "meshes")
 
 
@@ -169,7 +172,7 @@ def plum_stack_3d():
                 els.append({"type": "plum", "position": [r4(x % 6.0), r4(y % size[1]), r4(z)],
                             "radius": r, "orientation": [r4(c) for c in quat_about([0, 0, 1], rng.uniform(0, 6.28))]})
     mesh = write_mesh(sm.sphere(r, 10, 18, squash=0.95, dimple=0.12), "plum", "a plum of radius 0.5")
-    write_exemplar("plum_stack_3d", 3, [6.0, r4(size[1]), 2.6], [{"name": "plum", "mesh": mesh}], els,
+    write_exemplar("plum_stack_3d", 3, [6.0, r4(size[1]), 2.6], [{"name": "plum", "color": PLUM, "mesh": mesh}], els,
                    "Plums (radius 0.5) in three hexagonal layers on a floor at z = 0, the top layer "
                    "uneven; periodic in x and y.")
 
@@ -182,8 +185,8 @@ def pebbles_3d():
     shapes = []
     for k, (a, b, c) in enumerate([(0.36, 0.26, 0.18), (0.3, 0.24, 0.16), (0.26, 0.2, 0.15)]):
         shapes.append(("pebble%d" % k, a, b, c))
-    types = [{"name": n, "mesh": write_mesh(sm.ellipsoid(a, b, c, 8, 14), n, "a pebble")}
-             for n, a, b, c in shapes]
+    types = [{"name": n, "color": PEBBLES[k], "mesh": write_mesh(sm.ellipsoid(a, b, c, 8, 14), n, "a pebble")}
+             for k, (n, a, b, c) in enumerate(shapes)]
     els = []
     for _ in range(40000):
         n, a, b, c = shapes[rng.randrange(len(shapes))]
@@ -211,9 +214,9 @@ def dish_3d():
     place = Placer(size, per, 0.6)
     bean_ref = [[-0.28, -0.03, 0.0], [0.0, 0.06, 0.0], [0.28, -0.03, 0.0]]
     types = [
-        {"name": "corn", "mesh": write_mesh(sm.sphere(0.15, 8, 12, squash=0.75), "corn", "a corn kernel")},
-        {"name": "carrot", "mesh": write_mesh(sm.box(0.3, 0.3, 0.3), "carrot_dice", "a carrot dice")},
-        {"name": "bean", "rigid": True,
+        {"name": "corn", "color": "#f2c230", "mesh": write_mesh(sm.sphere(0.15, 8, 12, squash=0.75), "corn", "a corn kernel")},
+        {"name": "carrot", "color": "#e8731c", "mesh": write_mesh(sm.box(0.3, 0.3, 0.3), "carrot_dice", "a carrot dice")},
+        {"name": "bean", "color": "#5d9b3a", "rigid": True,
          "mesh": write_mesh(sm.tube(sm.subdivide_polyline(bean_ref, 4), [0.05, 0.09, 0.1, 0.11, 0.12, 0.11, 0.1, 0.09, 0.05], 10),
                             "bean", "a green bean, three samples long")},
     ]
@@ -285,7 +288,7 @@ def spaghetti_3d():
             break
     reference = [[r4(-length / 2 + length * k / (n - 1)), 0.0, 0.0] for k in range(n)]
     mesh = sm.tube(sm.subdivide_polyline(reference, 3), [rad] * (3 * (n - 1) + 1), 8)
-    types = [{"name": "noodle", "rigid": False, "mesh": write_mesh(mesh, "noodle", "a straight noodle"),
+    types = [{"name": "noodle", "color": "#e6c35c", "rigid": False, "mesh": write_mesh(mesh, "noodle", "a straight noodle"),
               "reference": reference}]
     plate = sm.revolve([(0, 0), (9.5, 0), (10, 0.4), (10, 0.8), (0, 0.8)], 64)
     plate.transformed(lambda p: (p[0] + 10, p[1] + 10, p[2])).write_obj(
@@ -309,7 +312,7 @@ def bananas_3d():
         a = (k / 16 - 0.5) * 1.1
         fine.append([1.6 * math.sin(a), 1.6 * (1 - math.cos(a)) - 0.16, 0.0])
     radii = [0.05 + 0.13 * math.sin(math.pi * (0.05 + 0.9 * k / 16)) for k in range(17)]
-    types = [{"name": "banana", "mesh": write_mesh(sm.tube(fine, radii, 10), "banana", "a banana")}]
+    types = [{"name": "banana", "color": "#f2d13a", "mesh": write_mesh(sm.tube(fine, radii, 10), "banana", "a banana")}]
     els = []
     for _ in range(30000):
         c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), rng.uniform(0.16, size[2] - 0.16)]
@@ -333,7 +336,7 @@ def carrots_2d():
     ref = [[-0.45, 0.0], [0.0, 0.0], [0.45, 0.0]]
     cone = [[-0.55 + 1.1 * k / 8, 0.0, 0.0] for k in range(9)]
     radii = [0.03 + 0.14 * (k / 8) ** 0.7 for k in range(9)]
-    types = [{"name": "carrot", "mesh": write_mesh(sm.tube(cone, radii, 10), "carrot", "a carrot, tip at -x")}]
+    types = [{"name": "carrot", "color": "#e8731c", "mesh": write_mesh(sm.tube(cone, radii, 10), "carrot", "a carrot, tip at -x")}]
     els = []
     for _ in range(30000):
         c = [rng.uniform(0, 8), rng.uniform(0, 8)]
@@ -387,7 +390,7 @@ def bricks_3d():
             x = (i + 0.5 + 0.5 * (row % 2)) * (bl + gap * 0.92) % size[0]
             els.append({"type": "brick", "position": [r4(x + rng.gauss(0, 0.01)), r4(y + rng.gauss(0, 0.01)), r4(bd / 2)],
                         "radius": r4(bh / 2)})
-    types = [{"name": "brick", "mesh": write_mesh(sm.box(bl, bh, bd), "brick", "a brick")}]
+    types = [{"name": "brick", "color": "#a4452c", "mesh": write_mesh(sm.box(bl, bh, bd), "brick", "a brick")}]
     house = sm.convex_prism_house(8.0, 6.0, 4.0, 6.5).transformed(lambda p: (p[0] + 5, p[1] + 4, p[2]))
     house.write_obj(os.path.join(HERE, "house.obj"), "a house with a gable roof")
     # The field on the house: per face (vertices not shared), x = horizontal along the face,

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "status_printer.hpp"
 #include "tessera/pcf_plot.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -77,8 +78,12 @@ void run_standard(const AnalyzeArgs& args) {
         fail_option("--bins must be >= 2, or 0 for automatic; got " + std::to_string(args.pcf.bins));
     check_output_path(args.csv, "--csv", {".csv"});
 
-    const tessera::Exemplar data = load_input(args.input, args.input_domain);
-    const tessera::PcfResult g = tessera::pair_correlation(data, args.pcf);
+    StatusPrinter status("analyze", args.quiet, std::cerr);
+    const tessera::Exemplar data =
+        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
+    const tessera::PcfResult g = status.step("measuring the pair correlation of " + std::to_string(data.elements.size()) +
+                                                 " elements",
+                                             [&] { return tessera::pair_correlation(data, args.pcf); });
     // Without a class column the single class has no name to report.
     const bool named = extension_of(args.input) != ".csv" || csv_has_class_column(args.input);
     std::string out = "r,class_a,class_b,g\n";
@@ -103,15 +108,20 @@ void run_model(const AnalyzeArgs& args) {
     if (!args.model.empty()) check_output_path(args.model, "-o", {".json"});
     if (!args.plot.empty()) check_output_path(args.plot, "--plot", {".svg", ".png"});
 
-    const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
-    const tessera::PcfModel model = tessera::analyze_distribution(exemplar, args.settings);
+    StatusPrinter status("analyze", args.quiet, std::cerr);
+    const tessera::Exemplar exemplar =
+        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
+    const tessera::PcfModel model = status.step(
+        "analysing " + std::to_string(exemplar.elements.size()) + " elements",
+        [&] { return tessera::analyze_distribution(exemplar, args.settings); });
     // Everything is made before anything is written: a failure leaves no file behind.
     const std::string json = tessera::pcf_model_to_json(model);
     std::string picture;
     tessera::PcfPlotOptions plot;
     if (!args.compare.empty()) {
         if (args.plot.empty()) fail_option("--compare needs --plot");
-        plot.measured = tessera::measure_distribution(model, load_input(args.compare, ""));
+        plot.measured = status.step("measuring " + args.compare,
+                                    [&] { return tessera::measure_distribution(model, load_input(args.compare, "")); });
     }
     if (!args.plot.empty())
         picture = extension_of(args.plot) == ".png" ? tessera::pcf_plot_png(model, plot)
@@ -178,8 +188,7 @@ Subcommand add_analyze_command(CLI::App& app) {
     args->rmax_opt = cmd->add_option("--rmax", args->pcf.r_max,
                                      "With --standard-pcf: largest r; 0 = 5 x the mean nearest-neighbour distance.")
                          ->capture_default_str();
-    args->bins_opt = cmd->add_option("--bins", args->pcf.bins, "With --standard-pcf: number of r values; 0 = 101.")
-                         ->capture_default_str();
+    args->bins_opt = add_integer_option(*cmd, "--bins", args->pcf.bins, "With --standard-pcf: number of r values; 0 = 101.");
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { args->standard ? run_standard(*args) : run_model(*args); }};

@@ -2,10 +2,12 @@
 // element's change (EDIT.json, see docs/format.md) to that element and to every
 // element whose neighbourhood is similar (tessera::edit_elements, section 6.3 of
 // the paper), and reports how many changed.
+#include <cmath>
 #include <iostream>
 #include <memory>
 
 #include "common.hpp"
+#include "status_printer.hpp"
 
 namespace tessera_cli {
 namespace {
@@ -17,17 +19,26 @@ struct EditArgs {
 };
 
 void run_edit(EditArgs& args) {
-    if (!(args.options.radius >= 0.0)) fail_option("--radius must be >= 0 (0 = automatic)");
-    if (args.options.threads < 0) fail_option("--threads must be >= 0");
+    StatusPrinter status("edit", args.quiet, std::cerr);
+    if (!(args.options.radius >= 0.0) || !std::isfinite(args.options.radius))
+        fail_option("--radius must be >= 0 (0 = automatic), got " + format_number(args.options.radius));
+    if (std::isnan(args.options.threshold)) fail_option("--threshold must be a number (negative = automatic)");
+    if (args.options.threads < 0)
+        fail_option("--threads must be >= 0 (0 = all hardware threads), got " + std::to_string(args.options.threads));
     check_arrangement_output(args.output, "-o");
     tessera::SaveOptions save_options;
     save_options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
-    const tessera::Exemplar data = load_input(args.input, args.input_domain);
-    if (tessera::is_scene_path(args.output)) tessera::build_scene(data);  // meshes checked before the edit
+    const tessera::Exemplar data =
+        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
+    if (tessera::is_scene_path(args.output))  // meshes checked before the edit
+        status.step("checking the element meshes", [&] { tessera::build_scene(data); });
     const tessera::ElementEdit edit = tessera::parse_edit_json(tessera::read_file(args.edit), args.edit);
     tessera::EditReport report;
-    const tessera::Exemplar result = tessera::edit_elements(data, edit, args.options, &report);
-    const std::string scene = write_arrangement(result, args.output, save_options);
+    const tessera::Exemplar result = status.step("comparing the neighbourhoods of " + std::to_string(data.elements.size()) +
+                                                     " elements with the edited one's",
+                                                 [&] { return tessera::edit_elements(data, edit, args.options, &report); });
+    const std::string scene =
+        status.step("writing " + args.output, [&] { return write_arrangement(result, args.output, save_options); });
     if (!args.quiet && !scene.empty()) std::cerr << "scene: " << scene << std::endl;
     if (!args.quiet)
         std::cerr << "edit: changed " << report.changed.size() << " of " << data.elements.size()
@@ -57,7 +68,7 @@ Subcommand add_edit_command(CLI::App& app) {
     cmd->add_option("--radius", args->options.radius,
                     "Neighbourhood radius; 0 = automatic (2 spacings in 2D, 1.5 in 3D).")
         ->capture_default_str();
-    cmd->add_option("--threads", args->options.threads, "Worker threads; 0 = all.")->capture_default_str();
+    add_threads_option(*cmd, args->options.threads);
     add_gltf_instancing_option(*cmd, args->gltf_instancing);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);

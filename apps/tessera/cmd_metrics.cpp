@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "status_printer.hpp"
 
 namespace tessera_cli {
 namespace {
@@ -27,11 +28,16 @@ void check_options(const MetricsArgs& args) {
 }
 
 void run_metrics(const MetricsArgs& args) {
+    StatusPrinter status("metrics", args.quiet, std::cerr);
     check_options(args);
     if (!args.report.empty()) check_output_path(args.report, "-o", {".json"});
-    const tessera::Exemplar exemplar = load_input(args.exemplar, args.input_domain, "--input-domain");
-    const tessera::Exemplar output = load_input(args.output, args.output_domain, "--output-domain");
-    const std::string report = tessera::metrics_report_json(exemplar, output, args.pcf) + "\n";
+    const tessera::Exemplar exemplar = status.step(
+        "reading " + args.exemplar, [&] { return load_input(args.exemplar, args.input_domain, "--input-domain"); });
+    const tessera::Exemplar output = status.step(
+        "reading " + args.output, [&] { return load_input(args.output, args.output_domain, "--output-domain"); });
+    const std::string report = status.step("measuring " + std::to_string(output.elements.size()) + " elements", [&] {
+        return tessera::metrics_report_json(exemplar, output, args.pcf) + "\n";
+    });
     if (args.report.empty())
         std::cout << report << std::flush;
     else {
@@ -65,8 +71,7 @@ Subcommand add_metrics_command(CLI::App& app) {
            "--bandwidth", args->pcf.bandwidth,
            "Standard deviation of the Gaussian kernel of the pair correlation; 0 = automatic (rmax / 40).")
         ->capture_default_str();
-    cmd->add_option("--bins", args->pcf.bins, "Number of r values from 0 to rmax; 0 = automatic (101).")
-        ->capture_default_str();
+    add_integer_option(*cmd, "--bins", args->pcf.bins, "Number of r values from 0 to rmax; 0 = automatic (101).");
     add_input_domain_option(*cmd, args->input_domain, "EXEMPLAR");
     cmd->add_option("--output-domain", args->output_domain,
                     "Like --input-domain, for OUTPUT (useful when OUTPUT is a .csv, which stores no domain).")

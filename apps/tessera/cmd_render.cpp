@@ -1,35 +1,39 @@
 // apps/tessera/cmd_render.cpp — `tessera render FILE -o PICTURE`: draws an exemplar
 // or arrangement as a .png or .svg (tessera::render_to_file): 2D elements as disks
-// or polylines coloured by class, 3D as a shaded orthographic view.
+// or polylines coloured by class, 3D as a shaded orthographic view, with a legend of
+// the class names below. Every error names the flag or file at fault.
 #include <iostream>
 #include <memory>
 
 #include "common.hpp"
+#include "status_printer.hpp"
 
 namespace tessera_cli {
 namespace {
 
 struct RenderArgs {
     std::string input, output, input_domain, meshes = "auto";
-    bool no_domain = false, no_samples = false, quiet = false;
+    bool no_domain = false, no_samples = false, no_legend = false, quiet = false;
     tessera::RenderOptions render;
 };
 
 void run_render(RenderArgs& args) {
-    if (args.render.width < 1)
-        fail_option("--width must be a number of pixels >= 1, got " + std::to_string(args.render.width));
+    StatusPrinter status("render", args.quiet, std::cerr);
     check_output_path(args.output, "-o", {".png", ".svg"});
-    const tessera::Exemplar data = load_input(args.input, args.input_domain);
+    args.render.meshes = parse_meshes_option(args.meshes);
+    check_meshes_for_picture(args.render.meshes, args.output);
     args.render.show_domain = !args.no_domain;
     args.render.show_samples = !args.no_samples;
-    args.render.meshes = parse_meshes_option(args.meshes);
-    try {
-        tessera::render_to_file(data, args.output, args.render);
-    } catch (const tessera::Error& e) {
-        // The extension was checked above, so an option error here is about the size.
-        if (e.kind() == tessera::ErrorKind::option) fail_option(std::string("--width: ") + e.what());
-        throw;
-    }
+    args.render.show_legend = !args.no_legend;
+    // The width's range is checked before the input is read; the picture's height, which
+    // the data decide, when it is drawn.
+    const FlagNames flags = {{"width", "--width"}, {"meshes", "--meshes"}};
+    with_flag_names(flags, [&] { tessera::check_render_options(args.render); });
+    const tessera::Exemplar data =
+        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
+    status.step("drawing " + args.output, [&] {
+        with_flag_names(flags, [&] { tessera::render_to_file(data, args.output, args.render); });
+    });
     if (!args.quiet) std::cerr << "wrote " << args.output << std::endl;
 }
 
@@ -43,12 +47,13 @@ Subcommand add_render_command(CLI::App& app) {
         "class, 3D as an orthographic view with depth shading.");
     cmd->add_option("FILE", args->input, "The data to draw (.json or .csv).")->required()->type_name("FILE");
     add_output_option(*cmd, args->output, "The picture to write: .png or .svg.", true);
-    cmd->add_option("--width", args->render.width,
+    add_integer_option(*cmd, "--width", args->render.width,
                     "Picture width in pixels (16 to 16384); the height follows the "
-                    "domain's aspect ratio.")
-        ->capture_default_str();
+                    "domain's aspect ratio, plus the legend strip.");
     cmd->add_flag("--no-domain", args->no_domain, "Do not draw the domain outline.");
     cmd->add_flag("--no-samples", args->no_samples, "Do not mark the samples of multi-sample elements.");
+    cmd->add_flag("--no-legend", args->no_legend,
+                  "Do not draw the legend (a swatch and the name of every class, in a strip below the picture).");
     add_meshes_option(*cmd, args->meshes);
     add_input_domain_option(*cmd, args->input_domain, "FILE");
     add_quiet_option(*cmd, args->quiet);

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "status_printer.hpp"
 
 namespace tessera_cli {
 namespace {
@@ -18,6 +19,7 @@ struct SceneArgs {
 };
 
 void run_scene(SceneArgs& args) {
+    StatusPrinter status("scene", args.quiet, std::cerr);
     check_output_path(args.output, "-o", {".usda", ".gltf", ".glb", ".obj", ".mesh.ply", ".ply"});
     if (!tessera::is_scene_path(args.output))
         fail_option("-o " + args.output + ": a scene is .usda, .gltf, .glb, .obj or .mesh.ply (a plain .ply is the "
@@ -30,8 +32,10 @@ void run_scene(SceneArgs& args) {
         fail_option("--tube-sides must be 3 to 64, got " + std::to_string(o.tube_sides));
     if (!(o.deform_falloff > 0.0) || !std::isfinite(o.deform_falloff))
         fail_option("--deform-falloff must be a number > 0, got " + format_number(o.deform_falloff));
-    const tessera::Exemplar data = load_input(args.input, args.input_domain);
-    const tessera::Scene scene = tessera::save_scene(data, args.output, args.options);
+    const tessera::Exemplar data =
+        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
+    const tessera::Scene scene = status.step("building and writing " + args.output,
+                                             [&] { return tessera::save_scene(data, args.output, args.options); });
     if (!args.quiet) std::cerr << "scene: " << describe_scene(scene) << "; wrote " << args.output << std::endl;
 }
 
@@ -52,13 +56,11 @@ Subcommand add_scene_command(CLI::App& app) {
                       "their own for the others), .gltf (buffer embedded) or .glb (see --gltf-instancing), "
                       ".obj, or .mesh.ply (ASCII PLY with per-face element and class).",
                       true);
-    cmd->add_option("--sphere-subdivisions", args->options.geometry.sphere_subdivisions,
+    add_integer_option(*cmd, "--sphere-subdivisions", args->options.geometry.sphere_subdivisions,
                     "Subdivisions of the icosphere of single-sample elements without a mesh (0 to 5; 20 x 4^N "
-                    "triangles).")
-        ->capture_default_str();
-    cmd->add_option("--tube-sides", args->options.geometry.tube_sides,
-                    "Sides of the tubes of multi-sample elements without a mesh (3 to 64).")
-        ->capture_default_str();
+                    "triangles).");
+    add_integer_option(*cmd, "--tube-sides", args->options.geometry.tube_sides,
+                    "Sides of the tubes of multi-sample elements without a mesh (3 to 64).");
     cmd->add_option("--deform-falloff", args->options.geometry.deform_falloff,
                     "Width of a sample's influence on a deformable mesh, times the mean distance between "
                     "consecutive reference samples (> 0; larger = smoother, less exact bends).")

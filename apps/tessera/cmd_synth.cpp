@@ -19,6 +19,7 @@
 #include <time.h>
 
 #include "common.hpp"
+#include "status_printer.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -141,39 +142,32 @@ void check_options(SynthArgs& args) {
         fail_option("--extent must be a number > 0, got " + format_number(p.analysis.extent));
 }
 
-// det: one line per iteration; pcf: one per refinement sweep (numbered over all classes,
-// out of at most --iterations per class).
-tessera::Progress make_progress(bool quiet, const char* unit) {
-    return [quiet, unit](const tessera::ProgressEvent& event) {
-        if (!quiet && event.stage == "iteration") {
-            char line[160];
-            std::snprintf(line, sizeof line, "%s %d/%d  energy %.6g  elapsed %.2f s", unit,
-                          event.iteration + 1, event.iterations, event.energy, event.elapsed_s);
-            std::cerr << line << std::endl;
-        }
-        return interrupted == 0;
-    };
-}
-
 void run_synth(SynthArgs& args) {
     std::optional<InterruptScope> interrupt_scope(std::in_place);
+    StatusPrinter status("synth", args.quiet, std::cerr);
     check_options(args);
     if (args.domain_option->count() > 0) tessera::check_domain_spec(args.domain, "--domain");
     check_arrangement_output(args.output, "-o");
-    if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
     tessera::RenderOptions preview_options;
     preview_options.meshes = parse_meshes_option(args.meshes);
+    if (!args.preview.empty()) {
+        check_output_path(args.preview, "--preview", {".png", ".svg"});
+        check_meshes_for_picture(preview_options.meshes, args.preview);
+    }
     tessera::SaveOptions save_options;
     save_options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
 
-    const tessera::Exemplar exemplar = load_input(args.input, args.input_domain);
+    const tessera::Exemplar exemplar =
+        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
     // A scene output needs the types' meshes and reference layouts: check them (by
     // building the exemplar's scene) before the synthesis rather than after it.
     const bool preview_meshes =
         !args.preview.empty() && preview_options.meshes != tessera::RenderOptions::Meshes::off &&
         std::any_of(exemplar.types.begin(), exemplar.types.end(), [](const auto& t) { return !t.mesh.empty(); });
-    if (tessera::is_scene_path(args.output) || preview_meshes) tessera::build_scene(exemplar);
-    const tessera::Domain domain = output_domain(args, exemplar);
+    if (tessera::is_scene_path(args.output) || preview_meshes)
+        status.step("checking the element meshes", [&] { tessera::build_scene(exemplar); });
+    const tessera::Domain domain =
+        status.step("building the output domain", [&] { return output_domain(args, exemplar); });
     if (!args.quiet && !domain.notes().empty()) std::cerr << "synth: note: " << domain.notes() << std::endl;
     if (!args.field.empty()) args.det.field = tessera::OrientationField::parse(args.field, exemplar.dimension, "--field");
     if (!args.gravity.empty()) args.det.gravity = tessera::parse_axis_direction(args.gravity, "--gravity");
@@ -195,19 +189,27 @@ void run_synth(SynthArgs& args) {
     }
 
     tessera::Arrangement result;
+    const auto keep_going = [] { return interrupted == 0; };
     try {
         if (pcf)
-            result = tessera::synthesize_pcf(exemplar, domain, args.pcf, make_progress(args.quiet, "sweep"));
+            result = tessera::synthesize_pcf(exemplar, domain, args.pcf, status.progress(keep_going, "sweep"));
         else
-            result = tessera::synthesize_det(exemplar, domain, args.det, make_progress(args.quiet, "iteration"));
+            result = tessera::synthesize_det(exemplar, domain, args.det, status.progress(keep_going, "iteration"));
     } catch (const tessera::Cancelled&) {
         throw tessera::Error(tessera::ErrorKind::cancelled, "interrupted; nothing was written");
     }
+    status.flush();
     interrupt_scope.reset();  // from here Ctrl-C stops the command the usual way (writes are atomic)
 
-    // The preview goes first: when OUTPUT exists, the whole command succeeded.
-    if (!args.preview.empty()) tessera::render_to_file(result, args.preview, preview_options);
-    const std::string scene = write_arrangement(result, args.output, save_options);
+    // The preview goes first: when OUTPUT exists, the whole command succeeded. Its width
+    // is fixed, so a picture too large for it is the preview's fault.
+    if (!args.preview.empty())
+        status.step("writing " + args.preview, [&] {
+            with_flag_names({{"width", "--preview"}, {"meshes", "--meshes"}},
+                            [&] { tessera::render_to_file(result, args.preview, preview_options); });
+        });
+    const std::string scene =
+        status.step("writing " + args.output, [&] { return write_arrangement(result, args.output, save_options); });
     if (!args.quiet) {
         char line[256];
         std::snprintf(line, sizeof line, "done: %zu elements, %.2f s, final energy %.6g",
@@ -236,7 +238,7 @@ Subcommand add_synth_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "synth",
         "Synthesize an arrangement like the exemplar INPUT in a new domain and write it to OUTPUT. "
-        "Progress goes to stderr, one line per iteration.");
+        "Progress goes to stderr: the set-up stages and the iterations, at most 4 lines per second.");
     cmd->add_option("INPUT", args->input, "Exemplar: a tessera .json file or a .csv table (docs/format.md).")
         ->required()
         ->type_name("FILE");
@@ -278,19 +280,17 @@ Subcommand add_synth_command(CLI::App& app) {
                     "(2D disks from pair correlation functions, docs/pcf_synthesis.md).")
         ->capture_default_str();
     add_seed_option(*cmd, args->det.seed);
-    cmd->add_option("--iterations", args->det.iterations,
+    add_integer_option(*cmd, "--iterations", args->det.iterations,
                     "det: iterations of search + assignment (0 = the patch-copy initialization only). "
-                    "pcf: at most this many refinement sweeps per class (default 100; 0 = no refinement).")
-        ->capture_default_str();
+                    "pcf: at most this many refinement sweeps per class (default 100; 0 = no refinement).");
     cmd->add_option(
            "--radius", args->det.radius,
            "Neighbourhood radius in the exemplar's units; 0 = automatic (mean nearest-neighbour distance "
            "x 2 in 2D, x 1.5 in 3D).")
         ->capture_default_str();
     add_threads_option(*cmd, args->det.threads);
-    cmd->add_option("--k", args->det.k,
-                    "Size of each exemplar sample's similarity set for k-coherence search (>= 1).")
-        ->capture_default_str();
+    add_integer_option(*cmd, "--k", args->det.k,
+                    "Size of each exemplar sample's similarity set for k-coherence search (>= 1).");
     cmd->add_option("--search", args->search,
                     "Candidate search: kcoherence (fast, the paper's) or exhaustive (every exemplar sample).")
         ->capture_default_str();
@@ -311,16 +311,14 @@ Subcommand add_synth_command(CLI::App& app) {
                     "larger (clusters, lattices; not with --field), at most half the exemplar's smallest "
                     "extent (docs/det.md).")
         ->capture_default_str();
-    cmd->add_option("--patch-candidates", args->det.patch_candidates,
-                    "Random candidate patches tried per cell at initialization (>= 1).")
-        ->capture_default_str();
+    add_integer_option(*cmd, "--patch-candidates", args->det.patch_candidates,
+                    "Random candidate patches tried per cell at initialization (>= 1).");
     cmd->add_flag("--physics", args->det.physics,
                   "Interleaved physics: after every iteration, rigid-body steps (Bullet) resolve "
                   "interpenetration and let elements settle under gravity; reports interpenetration and "
                   "floating elements before and after.");
-    cmd->add_option("--physics-substeps", args->det.physics_options.substeps,
-                    "Rigid-body steps per iteration with --physics.")
-        ->capture_default_str();
+    add_integer_option(*cmd, "--physics-substeps", args->det.physics_options.substeps,
+                    "Rigid-body steps per iteration with --physics.");
     cmd->add_option("--gravity", args->gravity,
                     "Direction of gravity, an axis with its sign (-x, +x, -y, +y, -z, +z). Default: -y in 2D, "
                     "-z in 3D.");
@@ -348,13 +346,11 @@ Subcommand add_synth_command(CLI::App& app) {
                     "interpolated) or mesh:FILE.ply|FILE.obj (3D, a direction per vertex). "
                     "Default: none (the exemplar's frame everywhere).");
     // --method pcf: the fields of tessera::PcfSynthOptions.
-    cmd->add_option("--max-fails", args->pcf.max_fails,
+    add_integer_option(*cmd, "--max-fails", args->pcf.max_fails,
                     "pcf: successive rejected candidates after which a class's remaining elements are placed by "
-                    "grid search (>= 0; 0 = grid search from the start).")
-        ->capture_default_str();
-    cmd->add_option("--grid-cells", args->pcf.grid_cells,
-                    "pcf: cells of the grid search along the longer side of the domain (1 to 4096).")
-        ->capture_default_str();
+                    "grid search (>= 0; 0 = grid search from the start).");
+    add_integer_option(*cmd, "--grid-cells", args->pcf.grid_cells,
+                    "pcf: cells of the grid search along the longer side of the domain (1 to 4096).");
     cmd->add_option("--epsilon0", args->pcf.epsilon0,
                     "pcf: error threshold of the first candidate of a class (Algorithm 1), >= 0.")
         ->capture_default_str();
@@ -366,9 +362,8 @@ Subcommand add_synth_command(CLI::App& app) {
                     "total, or when its lowest PCF error falls by less than this fraction per sweep over 10 sweeps, "
                     ">= 0 (0: never).")
         ->capture_default_str();
-    cmd->add_option("--outlier-rounds", args->pcf.outlier_rounds,
-                    "pcf: rounds of re-placing elements whose individual PCFs leave the validity region, >= 0.")
-        ->capture_default_str();
+    add_integer_option(*cmd, "--outlier-rounds", args->pcf.outlier_rounds,
+                    "pcf: rounds of re-placing elements whose individual PCFs leave the validity region, >= 0.");
     cmd->add_option("--sigma", args->pcf.analysis.sigma,
                     "pcf: width of the Gaussian kernel on the normalised distance axis, > 0.")
         ->capture_default_str();

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -39,6 +41,87 @@ void print_error(const std::string& message) {
 
 void fail_option(const std::string& message) {
     throw tessera::Error(tessera::ErrorKind::option, message);
+}
+
+std::optional<std::string> integer_digits(const std::string& text) {
+    size_t at = 0;
+    const bool negative = at < text.size() && text[at] == '-';
+    if (at < text.size() && (text[at] == '-' || text[at] == '+')) ++at;
+    // Mantissa: digits with an optional point; `point` = digits before the point.
+    std::string digits;
+    size_t point = std::string::npos;
+    for (; at < text.size(); ++at) {
+        const char c = text[at];
+        if (c >= '0' && c <= '9') digits += c;
+        else if (c == '.' && point == std::string::npos) point = digits.size();
+        else break;
+    }
+    if (digits.empty()) return std::nullopt;
+    if (point == std::string::npos) point = digits.size();
+    // Exponent, bounded: past a few hundred it is out of range of every type anyway.
+    long exponent = 0;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        const bool minus = at < text.size() && text[at] == '-';
+        if (at < text.size() && (text[at] == '-' || text[at] == '+')) ++at;
+        if (at == text.size()) return std::nullopt;
+        for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at)
+            exponent = std::min(exponent * 10 + (text[at] - '0'), 100000L);
+        if (minus) exponent = -exponent;
+    }
+    if (at != text.size()) return std::nullopt;
+    const size_t first = digits.find_first_not_of('0');
+    if (first == std::string::npos) return std::string("0");
+    // Shift the point by the exponent; what stays behind it must be zeros.
+    const long shifted = static_cast<long>(point) + exponent;
+    if (shifted <= static_cast<long>(first)) return std::nullopt;  // below 1 and not 0
+    if (shifted > 400) return std::string(negative ? "-" : "") + "1" + std::string(400, '0');  // surely out of range
+    std::string whole = digits.substr(0, std::min<size_t>(digits.size(), static_cast<size_t>(shifted)));
+    if (static_cast<size_t>(shifted) > digits.size()) whole += std::string(static_cast<size_t>(shifted) - digits.size(), '0');
+    else if (digits.find_first_not_of('0', static_cast<size_t>(shifted)) != std::string::npos) return std::nullopt;
+    whole.erase(0, whole.find_first_not_of('0'));
+    return (negative ? "-" : "") + whole;
+}
+
+CLI::Validator integer_notation(long long lo, unsigned long long hi) {
+    const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+    return CLI::Validator(
+        [lo, hi, range](std::string& text) -> std::string {
+            const std::optional<std::string> digits = integer_digits(text);
+            if (!digits) {
+                char* end = nullptr;
+                std::strtod(text.c_str(), &end);  // a number of another kind ("1.5", "inf")?
+                const bool number = !text.empty() && end == text.c_str() + text.size();
+                return text + (number ? " is not an integer" : " is not a number");
+            }
+            const bool negative = (*digits)[0] == '-';
+            unsigned long long magnitude = 0;
+            const char* begin = digits->data() + (negative ? 1 : 0);
+            const auto parsed = std::from_chars(begin, digits->data() + digits->size(), magnitude);
+            const unsigned long long lowest = lo < 0 ? 0ULL - static_cast<unsigned long long>(lo) : 0ULL;
+            if (parsed.ec != std::errc() || (negative ? magnitude > lowest : magnitude > hi))
+                return text + " is out of range (" + range + ")";
+            text = *digits;
+            return "";
+        },
+        "");
+}
+
+void rethrow_with_flag_names(const tessera::Error& e, FlagNames names) {
+    const std::string message = e.what();
+    if (e.kind() == tessera::ErrorKind::option)
+        for (const auto& [field, flag] : names) {
+            const std::string prefix = std::string(field) + ": ";
+            if (message.rfind(prefix, 0) == 0)
+                throw tessera::Error(e.kind(), std::string(flag) + ": " + message.substr(prefix.size()));
+        }
+    throw;
+}
+
+void check_meshes_for_picture(tessera::RenderOptions::Meshes meshes, const std::string& path) {
+    if (meshes == tessera::RenderOptions::Meshes::on && extension_of(path) != ".png")
+        fail_option("--meshes on: element meshes are drawn in .png pictures only, not in " + path +
+                    " (use a .png, or --meshes auto|off)");
 }
 
 CLI::Option* add_output_option(CLI::App& app, std::string& path, const std::string& what, bool required) {
@@ -91,19 +174,15 @@ tessera::GltfInstancing parse_gltf_instancing_option(const std::string& text) {
 }
 
 CLI::Option* add_threads_option(CLI::App& app, int& threads) {
-    return app
-        .add_option("--threads", threads,
-                    "Worker threads; 0 = all hardware threads. Results are byte-identical for "
-                    "every value.")
-        ->capture_default_str();
+    return add_integer_option(app, "--threads", threads,
+                              "Worker threads; 0 = all hardware threads. Results are byte-identical for "
+                              "every value.");
 }
 
 CLI::Option* add_seed_option(CLI::App& app, std::uint64_t& seed) {
-    return app
-        .add_option("--seed", seed,
-                    "Seed of every random draw (unsigned 64-bit). The same seed and options give "
-                    "the same output, whatever --threads is.")
-        ->capture_default_str();
+    return add_integer_option(app, "--seed", seed,
+                              "Seed of every random draw (unsigned 64-bit). The same seed and options give "
+                              "the same output, whatever --threads is.");
 }
 
 tessera::Exemplar load_input(const std::string& path, const std::string& input_domain_text,

@@ -9,7 +9,11 @@
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <limits>
+#include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "tessera/tessera.hpp"
 
@@ -32,6 +36,29 @@ void print_error(const std::string& message);
 // Throws tessera::Error(option) with `message` (which names the flag at fault).
 [[noreturn]] void fail_option(const std::string& message);
 
+// The integer that `text` writes in decimal notation, with an optional sign, fraction and
+// exponent ("1e3", "1000.0", "-2.5e1", "+7"), as plain digits with an optional '-'
+// ("1000", "-25"); nullopt when `text` is not such a number or its value is not an
+// integer ("1.5", "1e-3", "abc", "0x10"). Exact: no rounding through floating point.
+std::optional<std::string> integer_digits(const std::string& text);
+
+// The CLI11 transform every integer option goes through (add_integer_option): turns any
+// decimal notation of an integral value in [lo, hi] into plain digits, and fails naming
+// the value when it is not a number, not integral, or out of range (CLI11 then names the
+// option).
+CLI::Validator integer_notation(long long lo, unsigned long long hi);
+
+// Adds an integer option: the one way the subcommands declare one, so that every integer
+// option takes the same notations (integer_notation) and shows its default.
+template <class T>
+CLI::Option* add_integer_option(CLI::App& app, const std::string& name, T& value, const std::string& help) {
+    static_assert(std::is_integral_v<T> && !std::is_same_v<T, bool>);
+    return app.add_option(name, value, help)
+        ->transform(integer_notation(static_cast<long long>(std::numeric_limits<T>::min()),
+                                     static_cast<unsigned long long>(std::numeric_limits<T>::max())))
+        ->capture_default_str();
+}
+
 // Shared options. Each adds the option to `app` with the same name, meaning and
 // help text in every subcommand.
 CLI::Option* add_output_option(CLI::App& app, std::string& path, const std::string& what, bool required);
@@ -48,6 +75,28 @@ tessera::RenderOptions::Meshes parse_meshes_option(const std::string& text);
 CLI::Option* add_gltf_instancing_option(CLI::App& app, std::string& text);
 // The value of --gltf-instancing; fails with an option error naming the flag for another value.
 tessera::GltfInstancing parse_gltf_instancing_option(const std::string& text);
+
+// The library names the option field at fault at the start of its option errors
+// ("width: ...", tessera/render.hpp); `names` pairs such fields with this command's flags.
+using FlagNames = std::initializer_list<std::pair<const char*, const char*>>;
+
+// Rethrows the exception being handled, an option error starting with a field of `names`
+// ("width: ...") as the same error naming the flag ("--width: ...").
+[[noreturn]] void rethrow_with_flag_names(const tessera::Error& e, FlagNames names);
+
+// Runs `work`, naming flags instead of fields in its option errors (rethrow_with_flag_names).
+template <class Work>
+auto with_flag_names(FlagNames names, Work&& work) -> decltype(work()) {
+    try {
+        return work();
+    } catch (const tessera::Error& e) {
+        rethrow_with_flag_names(e, names);
+    }
+}
+
+// --meshes on asks for element meshes, which only .png pictures show: an option error for
+// another picture `path`, before any work is done.
+void check_meshes_for_picture(tessera::RenderOptions::Meshes meshes, const std::string& path);
 
 // Loads an exemplar or arrangement from .json or .csv. A non-empty
 // `input_domain_text` ("xmin,ymin,xmax,ymax[,zmin,zmax]", the value of the option

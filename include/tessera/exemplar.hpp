@@ -39,6 +39,11 @@ struct ElementType {
     // Classes this one depends on in the PCF method's dependency graph (pcf_synthesis.hpp),
     // by name; unset = every earlier type; an empty list = none (an independent class).
     std::optional<std::vector<std::string>> depends_on;
+    // Optional colour of the type in pictures: "#rrggbb", "#rgb" or a colour name
+    // (render.hpp, parse_color); empty = its name when that is a colour, else the palette.
+    // Last and with an initializer, so that brace initialisations of the fields above stay
+    // valid and warning-free.
+    std::string color = {};
 };
 
 struct Element {

@@ -15,6 +15,7 @@
 #include "convert.hpp"
 #include "tessera/exemplar.hpp"
 #include "tessera/io.hpp"
+#include "tessera/render.hpp"
 
 namespace py = pybind11;
 
@@ -119,6 +120,7 @@ py::list types_of(const tessera::Exemplar& e) {
         d["rigid"] = t.rigid;
         d["floor"] = t.floor;
         d["mesh"] = t.mesh;
+        d["color"] = t.color;
         std::vector<std::vector<double>> reference;
         for (const auto& p : t.reference) reference.push_back({p.x, p.y, p.z});
         d["reference"] = reference;
@@ -128,7 +130,8 @@ py::list types_of(const tessera::Exemplar& e) {
     return types;
 }
 
-// Applies {"name": ..., "rigid": ..., "floor": ..., "mesh": ..., "reference": ..., "depends_on": ...}.
+// Applies {"name": ..., "rigid": ..., "floor": ..., "mesh": ..., "color": ..., "reference": ...,
+// "depends_on": ...}.
 void apply_type(tessera::ElementType& type, const py::dict& d, const std::string& where) {
     for (const auto& [key_handle, value] : d) {
         const std::string key = py::str(key_handle);
@@ -137,13 +140,19 @@ void apply_type(tessera::ElementType& type, const py::dict& d, const std::string
             if (key == "rigid") type.rigid = value.cast<bool>();
             else if (key == "floor") type.floor = value.cast<bool>();
             else if (key == "mesh") type.mesh = value.cast<std::string>();
+            else if (key == "color") {
+                type.color = value.cast<std::string>();
+                if (!type.color.empty() && !tessera::parse_color(type.color))
+                    bad(where + ": color '" + type.color + "' is neither #rrggbb nor a colour name (CSS, such as "
+                                "darkgreen or 'light blue')");
+            }
             else if (key == "reference") type.reference = to_points(value, where + " reference");
             else if (key == "depends_on")
                 type.depends_on = value.is_none() ? std::nullopt
                                                   : std::optional<std::vector<std::string>>(
                                                         value.cast<std::vector<std::string>>());
             else
-                bad(where + ": unknown key '" + key + "' (name, rigid, floor, mesh, reference, depends_on)");
+                bad(where + ": unknown key '" + key + "' (name, rigid, floor, mesh, color, reference, depends_on)");
         } catch (const py::cast_error&) {
             bad(where + ": '" + key + "' has the wrong type");
         }
@@ -351,7 +360,7 @@ void data_properties(Class& c) {
             },
             "Names of the element classes (types); `classes` indexes this list.")
         .def_property_readonly("types", &types_of,
-                               "Element types as dicts: name, rigid, floor, mesh, reference, depends_on.")
+                               "Element types as dicts: name, rigid, floor, mesh, color, reference, depends_on.")
         .def_property_readonly("attribute_names", [](const E& e) { return e.attribute_names; })
         .def_property("domain", [](const E& e) { return e.domain; },
                       [](E& e, const tessera::Domain& d) {

@@ -49,14 +49,16 @@ void bind_io(py::module_& m) {
     m.def("save", &save_data<tessera::Exemplar>, py::arg("data"), py::arg("path"), py::arg("gltf_instancing"));
     m.def(
         "render",
-        [](const tessera::Exemplar& data, const std::string& path, int width, const std::string& meshes) {
+        [](const tessera::Exemplar& data, const std::string& path, int width, const std::string& meshes,
+           bool legend) {
             tessera::RenderOptions options;
             options.width = width;
             options.meshes = tessera::parse_render_meshes(meshes, "meshes");
+            options.show_legend = legend;
             py::gil_scoped_release release;
             tessera::render_to_file(data, path, options);
         },
-        py::arg("data"), py::arg("path"), py::arg("width"), py::arg("meshes"));
+        py::arg("data"), py::arg("path"), py::arg("width"), py::arg("meshes"), py::arg("legend"));
     m.def(
         "metrics_report",
         [](const tessera::Exemplar& exemplar, const tessera::Exemplar& output, double r_max, double bandwidth,

@@ -64,7 +64,8 @@ def exemplar(positions, classes=None, class_names=None, radii=None, orientations
     domain             a Domain (or (lo, hi) corners) the elements were observed in;
                        default the bounding box of the positions.
     types              optional list of dicts per class: {"name", "rigid", "floor", "mesh",
-                       "reference", "depends_on"} (docs/format.md, "Element types").
+                       "color", "reference", "depends_on"} (docs/format.md, "Element types");
+                       "color" is "#rrggbb" or a colour name, the class's colour in pictures.
 
     Raises OptionError (a ValueError) naming the array with the wrong shape or value,
     InputError when the data break the model's invariants.
@@ -98,11 +99,14 @@ def save(data, path, *, gltf_instancing="gpu"):
     _tessera.save(data, _os.fspath(path), gltf_instancing)
 
 
-def render(data, path, width=800, meshes="auto"):
+def render(data, path, width=800, meshes="auto", legend=True):
     """Write a preview picture (.png or .svg) of an exemplar or arrangement: disks and
-    polylines by class in 2D, a shaded orthographic view in 3D. meshes: "auto" draws the
-    element types' meshes when some type has one, "on" always, "off" never."""
-    _tessera.render(data, _os.fspath(path), width, meshes)
+    polylines by class in 2D, a shaded orthographic view in 3D, each class in its colour
+    (its type's "color", else its name when that is a colour, else a palette). meshes:
+    "auto" draws the element types' meshes when some type has one, "on" always, "off"
+    never. legend: a strip below the picture with a swatch and the name of every class
+    (never for a single unnamed class)."""
+    _tessera.render(data, _os.fspath(path), width, meshes, bool(legend))
 
 
 def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterations=None,
@@ -127,7 +131,10 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
     iterations det: search + assignment iterations (default 10); pcf: at most this many
               refinement sweeps per class (default 100).
     progress  optional callable, called with a dict (stage, iteration, iterations, energy,
-              elapsed) after every iteration. Return False to cancel (tessera.Cancelled is
+              elapsed) for every event of the run: its set-up stages ("init", and others a
+              method may add, e.g. "index") with their fraction done iteration / iterations
+              where they have one, every iteration ("iteration") and the end ("done"); the
+              same events the CLI prints. Return False to cancel (tessera.Cancelled is
               raised); an exception it raises cancels the run and propagates.
 
     det options (docs/cli.md and `tessera synth --help` give the details):

@@ -83,3 +83,14 @@ def test_concurrent_syntheses_from_threads_match_serial_ones(two_class):
     for t in threads:
         t.join()
     assert (results[1] == serial[0]).all() and (results[2] == serial[1]).all()
+
+
+def test_every_event_of_the_run_reaches_the_callback(two_class):
+    # The set-up stage first, the iterations, the end: the events the CLI prints.
+    events = []
+    tessera.synthesize(two_class, iterations=2, progress=events.append)
+    stages = [e["stage"] for e in events]
+    assert stages[0] == "init" and stages[-1] == "done"
+    assert stages.count("iteration") == 2
+    assert all(set(e) == {"stage", "iteration", "iterations", "energy", "elapsed"} for e in events)
+    assert [e["elapsed"] for e in events] == sorted(e["elapsed"] for e in events)

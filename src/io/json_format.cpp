@@ -21,6 +21,7 @@
 #include "io/io_util.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
+#include "tessera/render.hpp"
 
 namespace tessera {
 
@@ -245,7 +246,7 @@ private:
             const std::string where = "types[" + std::to_string(i) + "]";
             const Json& t = types[i];
             if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
-            check_keys(t, {"name", "rigid", "floor", "mesh", "reference", "depends_on"}, where);
+            check_keys(t, {"name", "rigid", "floor", "mesh", "color", "reference", "depends_on"}, where);
             ElementType type;
             type.name = string(require(t, "name", where), member(where, "name"));
             if (type.name.empty()) fail(member(where, "name"), "must not be empty");
@@ -254,6 +255,12 @@ private:
             if (t.contains("rigid")) type.rigid = boolean(t["rigid"], member(where, "rigid"));
             if (t.contains("floor")) type.floor = boolean(t["floor"], member(where, "floor"));
             if (t.contains("mesh")) type.mesh = string(t["mesh"], member(where, "mesh"));
+            if (t.contains("color")) {
+                type.color = string(t["color"], member(where, "color"));
+                if (!parse_color(type.color))
+                    fail(member(where, "color"), "'" + type.color + "' is neither #rrggbb nor a colour name (CSS, "
+                                                 "such as darkgreen or \"light blue\")");
+            }
             if (t.contains("reference")) {
                 // The samples' places in the mesh's frame (geometry.hpp); the count is
                 // checked against the type's elements by Exemplar::validate.
@@ -575,6 +582,7 @@ std::string io_detail::to_json_with_mesh_paths(const Exemplar& data, const RunSt
     for (const auto& t : data.types) {
         OrderedJson type{{"name", t.name}, {"rigid", t.rigid}, {"floor", t.floor},
                          {"mesh", t.mesh.empty() ? t.mesh : mesh_path(t.mesh)}};
+        if (!t.color.empty()) type["color"] = t.color;
         if (!t.reference.empty()) {
             OrderedJson reference = OrderedJson::array();
             for (const Vec3& p : t.reference) reference.push_back(point_json(p, data.dimension));

@@ -25,6 +25,15 @@ Canvas::Canvas(int width, int height, Rgb background)
     for (size_t i = 0; i < rgb_.size(); i += 3) rgb_[i] = background.r, rgb_[i + 1] = background.g, rgb_[i + 2] = background.b;
 }
 
+void Canvas::add_rows(int rows, Rgb background) {
+    if (rows <= 0) return;
+    const size_t old = rgb_.size();
+    height_ += rows;
+    rgb_.resize(static_cast<size_t>(width_) * height_ * 3);
+    coverage_.resize(static_cast<size_t>(width_) * height_, 0.0f);
+    for (size_t i = old; i < rgb_.size(); i += 3) rgb_[i] = background.r, rgb_[i + 1] = background.g, rgb_[i + 2] = background.b;
+}
+
 void Canvas::cover(int index, float coverage) {
     float& c = coverage_[index];
     if (c == 0.0f) touched_.push_back(index);

@@ -20,6 +20,8 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // Adds `rows` rows of `background` at the bottom (a legend strip under the picture).
+    void add_rows(int rows, Rgb background);
 
     // Coverage of the shape being built (see composite).
     void add_disk(double cx, double cy, double radius);

@@ -1,10 +1,13 @@
 // 2D PNG preview: white background, grey domain outline, single-sample elements
 // as anti-aliased disks with a slightly darker rim (so touching disks stay
 // distinct) and an orientation tick, multi-sample elements as thick polylines
-// through their samples with dots at the samples. Drawn in element order.
+// through their samples with dots at the samples. Drawn in element order, in the
+// colours of type_colors, with the legend strip below.
 #include <algorithm>
 #include <cmath>
 
+#include "render/class_colors.hpp"
+#include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/raster.hpp"
 #include "render/render_internal.hpp"
@@ -15,8 +18,7 @@ namespace {
 
 constexpr double min_radius_px = 0.75;  // smallest disk drawn, so dense outputs stay visible
 
-void draw_disk_element(Canvas& canvas, const Frame2D& f, const Style& style, const Element& e) {
-    const Rgb color = class_color(e.type);
+void draw_disk_element(Canvas& canvas, const Frame2D& f, const Style& style, const Element& e, Rgb color) {
     const double cx = f.px(e.position.x), cy = f.py(e.position.y);
     const double r = std::max(min_radius_px, style.radius_of(e) * f.scale);
     if (r >= 3.0) {
@@ -39,8 +41,7 @@ void draw_disk_element(Canvas& canvas, const Frame2D& f, const Style& style, con
 }
 
 void draw_polyline_element(Canvas& canvas, const Frame2D& f, const Style& style, const Exemplar& data,
-                           const Element& e, bool show_samples) {
-    const Rgb color = class_color(e.type);
+                           const Element& e, Rgb color, bool show_samples) {
     const double hw = std::max(0.6, style.line_half_width * f.scale);
     const Sample* s = &data.samples[e.first_sample];
     for (int k = 0; k + 1 < e.sample_count; ++k)
@@ -81,14 +82,18 @@ void draw_domain_outline(Canvas& canvas, const Frame2D& f, const Domain& domain)
 std::string render_png_2d(const Exemplar& data, const RenderOptions& options) {
     const Style style = make_style(data);
     const Frame2D frame = make_frame_2d(data, style, options);
+    const std::vector<Rgb> colors = class_colors(data);
+    const Legend legend = make_legend(data, colors, frame.width, options);
+    check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     Canvas canvas(frame.width, frame.height, white);
     if (options.show_domain) draw_domain_outline(canvas, frame, data.domain);
     for (const auto& e : data.elements) {
         if (e.sample_count <= 1)
-            draw_disk_element(canvas, frame, style, e);
+            draw_disk_element(canvas, frame, style, e, colors[e.type]);
         else
-            draw_polyline_element(canvas, frame, style, data, e, options.show_samples);
+            draw_polyline_element(canvas, frame, style, data, e, colors[e.type], options.show_samples);
     }
+    draw_legend_png(canvas, legend);
     return canvas.encode_png();
 }
 

@@ -1,11 +1,13 @@
 // 3D PNG preview: orthographic view (scene_3d.hpp), elements as shaded spheres
 // drawn with a z-buffer, the domain box as thin grey edges hidden where spheres
-// are in front, supersampled (supersample.hpp).
+// are in front, supersampled (supersample.hpp); the legend strip below.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "render/class_colors.hpp"
+#include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/raster.hpp"
 #include "render/render_internal.hpp"
@@ -26,12 +28,12 @@ struct HiResBuffer {
           depth(static_cast<size_t>(w) * h, -std::numeric_limits<float>::infinity()) {}
 };
 
-void draw_sphere(HiResBuffer& buf, const View3D& view, const Frame3D& frame, double ss, const Sphere& s) {
+void draw_sphere(HiResBuffer& buf, const View3D& view, const Frame3D& frame, double ss, const Sphere& s, Rgb color) {
     const double cx = frame.px(view, s.center) * ss, cy = frame.py(view, s.center) * ss;
     const double r = std::max(0.75, s.radius * frame.scale * ss);  // pixels
     const double depth = view.depth(s.center);
     const double depth_range = std::max(frame.near - frame.far, 1e-300);
-    const Rgb base = s.marker ? darker(class_color(s.type), 0.6f) : class_color(s.type);
+    const Rgb base = s.marker ? darker(color, 0.6f) : color;
     const int x0 = std::max(0, static_cast<int>(std::floor(cx - r))), x1 = std::min(buf.width - 1, static_cast<int>(std::ceil(cx + r)));
     const int y0 = std::max(0, static_cast<int>(std::floor(cy - r))), y1 = std::min(buf.height - 1, static_cast<int>(std::ceil(cy + r)));
     for (int y = y0; y <= y1; ++y) {
@@ -57,13 +59,17 @@ std::string render_png_3d(const Exemplar& data, const RenderOptions& options) {
     const View3D view = View3D::standard();
     const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples);
     const Frame3D frame = make_frame_3d(data, spheres, view, options);
+    const std::vector<Rgb> colors = class_colors(data);
+    const Legend legend = make_legend(data, colors, frame.width, options);
+    check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     const int ss = supersampling(frame.width, frame.height, sizeof(Rgb) + sizeof(float));
     HiResBuffer buf(frame.width * ss, frame.height * ss);
-    for (const auto& s : spheres) draw_sphere(buf, view, frame, ss, s);
+    for (const auto& s : spheres) draw_sphere(buf, view, frame, ss, s, colors[s.type]);
     if (options.show_domain)
         for (const auto& [a, b] : box_edges(data.domain.bounds()))
             draw_hidden_edge(buf.color, buf.depth, buf.width, view, frame, ss, a, b);
-    const Canvas canvas = box_filter(buf.color, buf.width, ss);
+    Canvas canvas = box_filter(buf.color, buf.width, ss);
+    draw_legend_png(canvas, legend);
     return canvas.encode_png();
 }
 

@@ -6,6 +6,8 @@
 
 namespace tessera {
 
+void check_render_options(const RenderOptions& options) { render::check_options(options); }
+
 std::string render_png(const Exemplar& data, const RenderOptions& options) {
     render::check_options(options);
     render::check_drawable(data);

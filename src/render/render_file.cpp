@@ -30,7 +30,7 @@ void render_to_file(const Exemplar& data, const std::string& path, const RenderO
     if (extension == ".svg") {
         // SVG pictures draw disks and polylines; element meshes are drawn in PNG only.
         if (options.meshes == RenderOptions::Meshes::on)
-            throw Error(ErrorKind::option, "cannot render '" + path + "' with element meshes: they are drawn in .png only");
+            throw Error(ErrorKind::option, "meshes: on draws element meshes, which only .png pictures show, not '" + path + "'");
         return write_file_atomic(path, render_svg(data, options));
     }
     throw Error(ErrorKind::option, "cannot render '" + path + "': the picture extension must be .png or .svg");

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include "render/class_colors.hpp"
+#include "render/legend.hpp"
 #include "render/mesh_raster.hpp"
 #include "render/palette.hpp"
 #include "render/raster.hpp"
@@ -41,6 +43,15 @@ Rgb shade_relief(Rgb base, const Vec3& n) {
     return toward_white(base, static_cast<float>(std::min(1.0, lit - 1.0)));
 }
 
+// The colour of every type an instance names: the data's type colours (type_colors), and
+// the palette for scene types beyond the data's.
+std::vector<Rgb> scene_colors(const Exemplar& data, const Scene& scene) {
+    std::vector<Rgb> colors = class_colors(data);
+    for (const SceneInstance& instance : scene.instances)
+        while (instance.type >= static_cast<int>(colors.size())) colors.push_back(class_color(static_cast<int>(colors.size())));
+    return colors;
+}
+
 std::string render_scene_3d(const Exemplar& data, const Scene& scene, const RenderOptions& options) {
     const View3D view = View3D::standard();
     // Framed like the sphere preview, with the corners of the meshes' bounds standing
@@ -51,6 +62,9 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
         for (const auto& [a, b] : box_edges(bounds))
             for (const Vec3& corner : {a, b}) extent.push_back({corner, 0.0, 0, false});
     const Frame3D frame = make_frame_3d(data, extent, view, options);
+    const std::vector<Rgb> colors = scene_colors(data, scene);
+    const Legend legend = make_legend(data, colors, frame.width, options);
+    check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     const int ss = supersampling(frame.width, frame.height, MeshRaster::bytes_per_pixel + sizeof(Rgb));
     const int width = frame.width * ss;
     MeshRaster raster(width, frame.height * ss);
@@ -61,17 +75,22 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
     for (size_t i = 0; i < color.size(); ++i) {
         const int tag = raster.tag(i);
         if (tag < 0) continue;
-        color[i] = shade_sphere(class_color(scene.instances[tag].type), sample_normal(raster, i),
+        color[i] = shade_sphere(colors[std::max(0, scene.instances[tag].type)], sample_normal(raster, i),
                                 (frame.near - raster.depth(i)) / depth_range);
     }
     if (options.show_domain)
         for (const auto& [a, b] : box_edges(data.domain.bounds()))
             draw_hidden_edge(color, raster.depths(), width, view, frame, ss, a, b);
-    return box_filter(color, width, ss).encode_png();
+    Canvas canvas = box_filter(color, width, ss);
+    draw_legend_png(canvas, legend);
+    return canvas.encode_png();
 }
 
 std::string render_scene_2d(const Exemplar& data, const Scene& scene, const RenderOptions& options) {
     const Frame2D frame = make_frame_2d(data, make_style(data), options);
+    const std::vector<Rgb> colors = scene_colors(data, scene);
+    const Legend legend = make_legend(data, colors, frame.width, options);
+    check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     Canvas canvas(frame.width, frame.height, white);
     if (options.show_domain) draw_domain_outline(canvas, frame, data.domain);
     const int ss = supersampling(frame.width, frame.height, MeshRaster::bytes_per_pixel);
@@ -94,7 +113,7 @@ std::string render_scene_2d(const Exemplar& data, const Scene& scene, const Rend
                     const int tag = raster.tag(k);
                     if (tag < 0) continue;
                     const Rgb c =
-                        shade_relief(class_color(scene.instances[tag].type), sample_normal(raster, k));
+                        shade_relief(colors[std::max(0, scene.instances[tag].type)], sample_normal(raster, k));
                     sum.r += c.r, sum.g += c.g, sum.b += c.b;
                     ++covered;
                 }
@@ -105,6 +124,7 @@ std::string render_scene_2d(const Exemplar& data, const Scene& scene, const Rend
                              {under.r * keep + sum.r * weight, under.g * keep + sum.g * weight,
                               under.b * keep + sum.b * weight});
         }
+    draw_legend_png(canvas, legend);
     return canvas.encode_png();
 }
 

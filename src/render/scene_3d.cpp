@@ -80,7 +80,7 @@ Frame3D make_frame_3d(const Exemplar& data, const std::vector<Sphere>& spheres, 
     f.near = near, f.far = far;
     const double height = std::round((y1 - y0 + 2.0 * margin) * f.scale);
     if (height > max_size)
-        throw Error(ErrorKind::option, "a " + std::to_string(options.width) + " pixel wide view of this domain would be " +
+        throw Error(ErrorKind::option, "width: a " + std::to_string(options.width) + " pixel wide view of this domain would be " +
                                            std::to_string(static_cast<long long>(height)) +
                                            " pixels tall (more than 16384); use a smaller width");
     f.height = std::max(1, static_cast<int>(height));

@@ -47,13 +47,13 @@ void check_drawable(const Exemplar& data) {
 
 void check_options(const RenderOptions& options) {
     if (options.width < min_width || options.width > max_size)
-        throw Error(ErrorKind::option, "render width must be between " + std::to_string(min_width) + " and " +
+        throw Error(ErrorKind::option, "width: must be between " + std::to_string(min_width) + " and " +
                                            std::to_string(max_size) + " pixels, got " + std::to_string(options.width));
 }
 
 void check_picture_size(int width, int height) {
     if (static_cast<double>(width) * height > max_pixels)
-        throw Error(ErrorKind::option, "a " + std::to_string(width) + " x " + std::to_string(height) +
+        throw Error(ErrorKind::option, "width: a " + std::to_string(width) + " x " + std::to_string(height) +
                                            " picture is too large (more than 64 million pixels); use a smaller width");
 }
 
@@ -79,7 +79,7 @@ Frame2D make_frame_2d(const Exemplar& data, const Style& style, const RenderOpti
     f.scale = options.width / (f.hi.x - f.lo.x);
     const double height = std::round((f.hi.y - f.lo.y) * f.scale);
     if (height > max_size)
-        throw Error(ErrorKind::option, "a " + std::to_string(options.width) + " pixel wide picture of this domain would be " +
+        throw Error(ErrorKind::option, "width: a " + std::to_string(options.width) + " pixel wide picture of this domain would be " +
                                            std::to_string(static_cast<long long>(height)) +
                                            " pixels tall (more than 16384); use a smaller width");
     f.height = std::max(1, static_cast<int>(height));

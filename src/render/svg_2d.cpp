@@ -2,11 +2,14 @@
 // The viewBox is in data units with y flipped (a scale(1,-1) group), so the
 // coordinates in the file are the data's own. Runs of elements of one class
 // share a <g> carrying the colours, which keeps large outputs compact while
-// keeping the PNG's element drawing order.
+// keeping the PNG's element drawing order. The legend strip below the domain is
+// drawn in pixel units (legend.hpp).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "render/class_colors.hpp"
+#include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/render_internal.hpp"
 #include "render/style.hpp"
@@ -17,7 +20,8 @@ namespace {
 
 constexpr double min_radius_px = 0.75;  // as in render_2d.cpp
 
-void write_disk(std::ostream& out, const SvgNumbers& num, double px_size, const Element& e, const Style& style) {
+void write_disk(std::ostream& out, const SvgNumbers& num, double px_size, const Element& e, const Style& style,
+                Rgb color) {
     const double r = std::max(min_radius_px * px_size, style.radius_of(e));
     const double r_px = r / px_size;
     const double x = e.position.x, y = e.position.y;
@@ -36,14 +40,13 @@ void write_disk(std::ostream& out, const SvgNumbers& num, double px_size, const 
         if (len < 1e-6) return;
         const double tx = x + 0.85 * r * axis.x / len, ty = y + 0.85 * r * axis.y / len;
         out << "<line x1=\"" << num(x) << "\" y1=\"" << num(y) << "\" x2=\"" << num(tx) << "\" y2=\"" << num(ty)
-            << "\" stroke=\"" << to_hex(darker(class_color(e.type), 0.45f)) << "\" stroke-width=\""
+            << "\" stroke=\"" << to_hex(darker(color, 0.45f)) << "\" stroke-width=\""
             << num(2.0 * std::clamp(0.1 * r_px, 0.6, 3.0) * px_size) << "\" stroke-linecap=\"round\"/>\n";
     }
 }
 
 void write_polyline(std::ostream& out, const SvgNumbers& num, double px_size, const Exemplar& data, const Element& e,
-                    const Style& style, bool show_samples) {
-    const Rgb color = class_color(e.type);
+                    const Style& style, Rgb color, bool show_samples) {
     const double hw = std::max(0.6 * px_size, style.line_half_width);
     const Sample* s = &data.samples[e.first_sample];
     out << "<polyline fill=\"none\" stroke=\"" << to_hex(color) << "\" stroke-width=\"" << num(2.0 * hw)
@@ -65,9 +68,14 @@ std::string render_svg_2d(const Exemplar& data, const RenderOptions& options) {
     const double px_size = 1.0 / f.scale;  // data units per pixel
     const SvgNumbers num(px_size);
     const double vw = f.hi.x - f.lo.x, vh = f.hi.y - f.lo.y;
+    const std::vector<Rgb> colors = class_colors(data);
+    const Legend legend = make_legend(data, colors, f.width, options);
+    check_picture_size(f.width, f.height + static_cast<int>(legend.height));
     std::ostringstream out;
-    // viewBox in flipped coordinates: data y in [lo.y, hi.y] becomes [-hi.y, -lo.y].
-    out << svg_header(f.width, f.height, num(f.lo.x) + " " + num(-f.hi.y) + " " + num(vw) + " " + num(vh));
+    // viewBox in flipped coordinates: data y in [lo.y, hi.y] becomes [-hi.y, -lo.y]; the
+    // legend strip adds its height (in data units) below.
+    out << svg_header(f.width, f.height + static_cast<int>(legend.height),
+                      num(f.lo.x) + " " + num(-f.hi.y) + " " + num(vw) + " " + num(vh + legend.height * px_size));
     out << "<rect x=\"" << num(f.lo.x) << "\" y=\"" << num(-f.hi.y) << "\" width=\"" << num(vw) << "\" height=\""
         << num(vh) << "\" fill=\"#ffffff\"/>\n";
     out << "<g transform=\"scale(1,-1)\">\n";
@@ -91,18 +99,27 @@ std::string render_svg_2d(const Exemplar& data, const RenderOptions& options) {
     for (const auto& e : data.elements) {
         if (e.type != open_type) {
             if (open_type >= 0) out << "</g>\n";
-            const Rgb color = class_color(e.type);
+            const Rgb color = colors[e.type];
             out << "<g class=\"" << "type-" << e.type << "\" fill=\"" << to_hex(color) << "\" stroke=\""
                 << to_hex(darker(color, 0.72f)) << "\">\n";
             open_type = e.type;
         }
         if (e.sample_count <= 1)
-            write_disk(out, num, px_size, e, style);
+            write_disk(out, num, px_size, e, style, colors[e.type]);
         else
-            write_polyline(out, num, px_size, data, e, style, options.show_samples);
+            write_polyline(out, num, px_size, data, e, style, colors[e.type], options.show_samples);
     }
     if (open_type >= 0) out << "</g>\n";
-    out << "</g>\n</svg>\n";
+    out << "</g>\n";
+    if (legend.height > 0.0) {
+        // A white band under the domain's picture, then the legend in pixel units.
+        out << "<rect x=\"" << num(f.lo.x) << "\" y=\"" << num(-f.lo.y) << "\" width=\"" << num(vw) << "\" height=\""
+            << num(legend.height * px_size) << "\" fill=\"#ffffff\"/>\n";
+        out << "<g transform=\"translate(" << num(f.lo.x) << " " << num(-f.lo.y) << ") scale(" << px_size << ")\">\n";
+        write_legend_svg(out, legend);
+        out << "</g>\n";
+    }
+    out << "</svg>\n";
     return out.str();
 }
 

@@ -3,7 +3,7 @@
 // algorithm stands in for the z-buffer) and filled with a radial gradient per
 // class that imitates the PNG's shading; depth fog is quantised into a few
 // gradient levels. Box edges behind the box centre go under the spheres, the
-// others over them.
+// others over them. The legend strip goes below (legend.hpp).
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -12,6 +12,8 @@
 #include <tuple>
 #include <utility>
 
+#include "render/class_colors.hpp"
+#include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/render_internal.hpp"
 #include "render/scene_3d.hpp"
@@ -27,8 +29,8 @@ std::string gradient_id(int type, bool marker, int level) {
     return "s" + std::to_string(type) + (marker ? "m" : "") + "f" + std::to_string(level);
 }
 
-void write_gradient(std::ostream& out, int type, bool marker, int level) {
-    const Rgb base = marker ? darker(class_color(type), 0.6f) : class_color(type);
+void write_gradient(std::ostream& out, int type, Rgb color, bool marker, int level) {
+    const Rgb base = marker ? darker(color, 0.6f) : color;
     const double farness = (level + 0.5) / fog_levels;
     const Vec3 light = Vec3{-0.4, 0.7, 0.6} / norm(Vec3{-0.4, 0.7, 0.6});
     const Vec3 lit = light;                                        // brightest point
@@ -51,6 +53,10 @@ std::string render_svg_3d(const Exemplar& data, const RenderOptions& options) {
     const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples);
     const Frame3D frame = make_frame_3d(data, spheres, view, options);
     const SvgNumbers num(1.0);
+    const std::vector<Rgb> colors = class_colors(data);
+    const Legend legend = make_legend(data, colors, frame.width, options);
+    check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
+    const int height = frame.height + static_cast<int>(legend.height);
     const double depth_range = std::max(frame.near - frame.far, 1e-300);
     auto fog_level = [&](const Sphere& s) {
         const double farness = (frame.near - (view.depth(s.center) + s.radius)) / depth_range;
@@ -65,14 +71,13 @@ std::string render_svg_3d(const Exemplar& data, const RenderOptions& options) {
     });
 
     std::ostringstream out;
-    out << svg_header(frame.width, frame.height,
-                      "0 0 " + std::to_string(frame.width) + " " + std::to_string(frame.height));
+    out << svg_header(frame.width, height, "0 0 " + std::to_string(frame.width) + " " + std::to_string(height));
     std::set<std::tuple<int, bool, int>> used;
     for (const auto& s : spheres) used.insert({s.type, s.marker, fog_level(s)});
     out << "<defs>\n";
-    for (const auto& [type, marker, level] : used) write_gradient(out, type, marker, level);
+    for (const auto& [type, marker, level] : used) write_gradient(out, type, colors[type], marker, level);
     out << "</defs>\n";
-    out << "<rect x=\"0\" y=\"0\" width=\"" << frame.width << "\" height=\"" << frame.height << "\" fill=\"#ffffff\"/>\n";
+    out << "<rect x=\"0\" y=\"0\" width=\"" << frame.width << "\" height=\"" << height << "\" fill=\"#ffffff\"/>\n";
 
     const Box& box = data.domain.bounds();
     const double centre_depth = view.depth(box.center());
@@ -94,6 +99,11 @@ std::string render_svg_3d(const Exemplar& data, const RenderOptions& options) {
             << "\" r=\"" << num(r) << "\" fill=\"url(#" << gradient_id(s.type, s.marker, fog_level(s)) << ")\"/>\n";
     }
     write_edges(true);
+    if (legend.height > 0.0) {
+        out << "<g transform=\"translate(0 " << frame.height << ")\">\n";
+        write_legend_svg(out, legend);
+        out << "</g>\n";
+    }
     out << "</svg>\n";
     return out.str();
 }

@@ -33,7 +33,7 @@ render::Frame2D frame_of(const Exemplar& ex, int width) {
 
 TEST(Render2d, PngDecodesToRequestedWidthAndAspect) {
     const Exemplar ex = two_disks();
-    const std::string png = render_png(ex, {.width = 400});
+    const std::string png = render_png(ex, {.width = 400, .show_legend = false});
     ASSERT_TRUE(test::has_png_signature(png));
     const auto img = test::decode_png(png);
     EXPECT_EQ(img.width, 400);
@@ -41,7 +41,7 @@ TEST(Render2d, PngDecodesToRequestedWidthAndAspect) {
 
     Exemplar wide = ex;
     wide.domain = Domain::box({0, 0, 0}, {20, 10, 0}, 2);
-    const auto wide_img = test::decode_png(render_png(wide, {.width = 400}));
+    const auto wide_img = test::decode_png(render_png(wide, {.width = 400, .show_legend = false}));
     EXPECT_EQ(wide_img.width, 400);
     EXPECT_NEAR(wide_img.height, 400 * (10 + 1.2) / (20 + 1.2), 2);  // 3% margins of the longer side
 }
@@ -116,7 +116,7 @@ TEST(Render2d, SingleElementAndOptionErrors) {
     Exemplar one;
     one.domain = Domain::box({0, 0, 0}, {4, 2, 0}, 2);
     one.add_element(one.type_index("a"), {Vec3{2, 1, 0}});
-    const auto img = test::decode_png(render_png(one, {.width = 200}));
+    const auto img = test::decode_png(render_png(one, {.width = 200, .show_legend = false}));
     ASSERT_EQ(img.width, 200);
     EXPECT_LE(test::color_distance(img.at(100, img.height / 2), render::class_color(0)), 1);
     try {

@@ -226,7 +226,7 @@ TEST(RenderScene, TwoDimensionalCubeSeenFromAboveWhereThePreviewPutsTheElement) 
     s.type_names = {"a"};
     s.meshes = {box_mesh({1, 1, 1})};
     s.instances = {placed(0, 0, 0, {3, 6, 0})};
-    const auto img = test::decode_png(render_scene_png(ex, s, {.width = 400}));
+    const auto img = test::decode_png(render_scene_png(ex, s, {.width = 400, .show_legend = false}));
     const auto frame = render::make_frame_2d(ex, render::make_style(ex), RenderOptions{.width = 400});
     ASSERT_EQ(img.width, frame.width);
     ASSERT_EQ(img.height, frame.height);  // the pixel scale of render_png

@@ -31,7 +31,7 @@ TEST(RenderSvg, OneCirclePerElementAndWellFormed) {
     for (int i = 0; i < 9; ++i) ex.add_element(i % 3 ? a : b, {Vec3{1.0 + i, 1.0 + 0.3 * i, 0}});
     ex.elements[4].radius = 0.7;
     ex.elements[2].orientation = Quat::from_angle_z(1.0);
-    const std::string svg = render_svg(ex, {.width = 500});
+    const std::string svg = render_svg(ex, {.width = 500, .show_legend = false});
     EXPECT_TRUE(svg.rfind("<?xml", 0) == 0 || svg.rfind("<svg", 0) == 0);
     EXPECT_TRUE(trimmed(svg).ends_with("</svg>"));
     EXPECT_EQ(count(svg, "<circle"), 9u);
@@ -39,7 +39,11 @@ TEST(RenderSvg, OneCirclePerElementAndWellFormed) {
     EXPECT_EQ(count(svg, "<svg"), 1u);
     EXPECT_NE(svg.find("width=\"500\""), std::string::npos);
     EXPECT_NE(svg.find("scale(1,-1)"), std::string::npos);
-    EXPECT_EQ(svg.find("b<&>"), std::string::npos);  // class names never reach the markup unescaped
+    // Class names reach the markup in the legend, escaped.
+    const std::string with_legend = render_svg(ex, {.width = 500});
+    EXPECT_EQ(with_legend.find("b<&>"), std::string::npos);
+    EXPECT_NE(with_legend.find(">b&lt;&amp;&gt;</text>"), std::string::npos);
+    EXPECT_EQ(count(with_legend, "<g"), count(with_legend, "</g>"));
     EXPECT_NE(svg.find("<line"), std::string::npos);  // the orientation tick
 }
 
@@ -49,11 +53,11 @@ TEST(RenderSvg, PolylinesForMultiSampleElements) {
     const int t = ex.type_index("stick");
     ex.add_element(t, {Vec3{1, 1, 0}, Vec3{2, 2, 0}, Vec3{3, 1, 0}});
     ex.add_element(ex.type_index("pebble"), {Vec3{5, 5, 0}});
-    const std::string with_dots = render_svg(ex);
+    const std::string with_dots = render_svg(ex, {.show_legend = false});
     EXPECT_EQ(count(with_dots, "<polyline"), 1u);
     EXPECT_EQ(count(with_dots, "<circle"), 1u + 3u);  // the pebble + 3 sample dots
-    EXPECT_EQ(count(render_svg(ex, {.show_samples = false}), "<circle"), 1u);
-    EXPECT_EQ(count(render_svg(ex, {.show_domain = false}), "<rect"), 1u);  // background only
+    EXPECT_EQ(count(render_svg(ex, {.show_samples = false, .show_legend = false}), "<circle"), 1u);
+    EXPECT_EQ(count(render_svg(ex, {.show_domain = false, .show_legend = false}), "<rect"), 1u);  // background only
 }
 
 TEST(RenderSvg, ThreeDimensionalCirclesBackToFront) {
@@ -62,7 +66,7 @@ TEST(RenderSvg, ThreeDimensionalCirclesBackToFront) {
     ex.domain = Domain::box({0, 0, 0}, {4, 4, 4}, 3);
     const int t = ex.type_index("ball");
     for (int i = 0; i < 4; ++i) ex.add_element(t, {Vec3{0.5 + i, 0.5 + i, 0.5 + i}});
-    const std::string svg = render_svg(ex);
+    const std::string svg = render_svg(ex, {.show_legend = false});
     EXPECT_TRUE(trimmed(svg).ends_with("</svg>"));
     EXPECT_EQ(count(svg, "<circle"), 4u);
     EXPECT_EQ(count(svg, "<line"), 12u);
