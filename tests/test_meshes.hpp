@@ -45,4 +45,24 @@ inline TriangleMesh icosphere(int levels, double radius = 1.0) {
     return m;
 }
 
+// Torus around the z axis: tube of radius `tube` whose centre circle has radius `ring`;
+// `around` x `across` quads split into outward, counter-clockwise triangles. A mesh with
+// a hole through it, whose inside a voxel grid gets wrong within a cell of the surface.
+inline TriangleMesh torus(double ring, double tube, int around = 48, int across = 24) {
+    TriangleMesh m;
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < across; ++j) {
+            const double u = 2 * M_PI * i / around, v = 2 * M_PI * j / across;
+            const double r = ring + tube * std::cos(v);
+            m.vertices.push_back({r * std::cos(u), r * std::sin(u), tube * std::sin(v)});
+        }
+    const auto at = [&](int i, int j) { return (i % around) * across + (j % across); };
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < across; ++j) {
+            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return m;
+}
+
 }  // namespace tessera::test

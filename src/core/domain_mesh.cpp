@@ -3,12 +3,19 @@
 // surface, for surface synthesis). Both become a VoxelShape: cubic cells, `resolution`
 // along the longest axis with two cells of empty margin, value 1 inside / 0 outside,
 // so c(p) of Eq. 6 is the trilinear interpolation of the voxel occupancy.
+// inside(p) is exact, not the voxels' (a sample a fraction of a cell outside the surface
+// is outside): the cell centre nearest p is classified exactly by the winding number,
+// and the triangles the segment from that centre to p crosses flip it (ray parity, only
+// in cells a triangle passes near); a shell adds the exact distance to the surface
+// where its voxel value cannot decide.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "core/domain_shape.hpp"
+#include "core/triangle_tree.hpp"
 #include "core/winding_number.hpp"
 #include "tessera/error.hpp"
 
@@ -19,7 +26,49 @@ class MeshShape final : public VoxelShape {
 public:
     std::string text;
     std::string describe() const override { return text; }
+
+    std::unique_ptr<core::TriangleTree> tree;
+    std::vector<uint8_t> enclosed;   // per cell: its centre is inside the mesh (exact)
+    std::vector<uint8_t> near;       // per cell: a triangle's box meets the cell
+    std::vector<float> to_surface;   // shells: per cell, the centre's distance to the surface
+    double thickness = 0.0;          // shells: the band's width; 0 for a solid mesh
+    double half_diagonal = 0.0;      // of a cell
+
+    bool inside(const Vec3& p) const override {
+        if (!in_box(p)) return false;
+        const int64_t v = nearest_cell(p);
+        bool in = enclosed[v];
+        if (near[v]) in ^= (tree->segment_crossings(centre(v), p) & 1) != 0;
+        if (!in || thickness == 0.0) return in;
+        // The distance to the surface is 1-Lipschitz: the centre's decides unless p is
+        // within a half diagonal of the band's edge.
+        const double d = to_surface[v];
+        if (d + half_diagonal <= thickness) return true;
+        if (d - half_diagonal > thickness) return false;
+        return tree->any_within(p, thickness);
+    }
 };
+
+// Cells whose box meets a triangle's bounding box: only there can the segment from a
+// cell's centre to a point of the cell cross the surface.
+std::vector<uint8_t> near_surface_cells(const TriangleMesh& mesh, const core::CubeGrid& grid) {
+    std::vector<uint8_t> near(static_cast<size_t>(grid.count()), 0);
+    constexpr double pad = 1e-3;  // of a cell: ties at cell borders count on both sides
+    for (const auto& t : mesh.triangles) {
+        int i0[3], i1[3];
+        for (int k = 0; k < 3; ++k) {
+            double lo = INFINITY, hi = -INFINITY;
+            for (int v : t) lo = std::min(lo, mesh.vertices[v][k]), hi = std::max(hi, mesh.vertices[v][k]);
+            i0[k] = std::clamp(static_cast<int>(std::floor((lo - grid.first[k]) / grid.cell + 0.5 - pad)), 0, grid.n[k] - 1);
+            i1[k] = std::clamp(static_cast<int>(std::floor((hi - grid.first[k]) / grid.cell + 0.5 + pad)), 0, grid.n[k] - 1);
+        }
+        for (int z = i0[2]; z <= i1[2]; ++z)
+            for (int y = i0[1]; y <= i1[1]; ++y)
+                for (int x = i0[0]; x <= i1[0]; ++x)
+                    near[x + int64_t(grid.n[0]) * (y + int64_t(grid.n[1]) * z)] = 1;
+    }
+    return near;
+}
 
 std::string base_name(const std::string& name) { return std::filesystem::path(name).filename().string(); }
 
@@ -124,11 +173,17 @@ std::shared_ptr<MeshShape> voxelize(const TriangleMesh& mesh, int resolution, co
         }
         if (2 * agree < samples) std::fill(shape->values.begin(), shape->values.end(), 0.0f);
     }
+    shape->enclosed.resize(w.size());
+    for (size_t v = 0; v < w.size(); ++v) shape->enclosed[v] = shape->values[v] > 0.5f;
     if (thickness > 0.0) {
-        const std::vector<float> d = core::surface_distance(mesh, grid, thickness + grid.cell, threads);
+        shape->to_surface = core::surface_distance(mesh, grid, thickness + 2.0 * grid.cell, threads);
         for (size_t v = 0; v < w.size(); ++v)
-            if (!(d[v] <= thickness)) shape->values[v] = 0.0f;
+            if (!(shape->to_surface[v] <= thickness)) shape->values[v] = 0.0f;
     }
+    shape->tree = std::make_unique<core::TriangleTree>(mesh);
+    shape->near = near_surface_cells(mesh, grid);
+    shape->thickness = thickness;
+    shape->half_diagonal = 0.5 * std::sqrt(3.0) * grid.cell;
     if (shape->finish(threads) == 0) {
         if (thickness > 0.0)
             throw Error(ErrorKind::domain, "shell of mesh " + name + " is empty: thickness " + std::to_string(thickness) +

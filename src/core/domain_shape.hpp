@@ -69,10 +69,12 @@ public:
     // closest_inside and distance_to_boundary use. Returns the number of inside cells.
     int64_t finish(int threads);
 
-private:
+protected:
     bool in_box(const Vec3& p) const;
     double interpolate(const Vec3& p) const;
     int64_t nearest_cell(const Vec3& p) const;
+
+private:
     int64_t inside_cells_ = 0;
     std::vector<int32_t> nearest_inside_;  // per cell: the nearest cell whose value >= threshold
     std::vector<float> outside_distance_;  // per cell: distance to the nearest cell below threshold

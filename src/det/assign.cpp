@@ -257,15 +257,16 @@ void snap_rigid_elements(OutputState& state, const InputIndex& index, int dimens
 }  // namespace
 
 // Elements that left the box are translated back (as a whole, so shapes are kept).
-void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
+int keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
     // Works through Domain::closest_inside only, so any domain shape is served: the
     // element moves by the largest correction any of its samples needs, a few times
     // (a move that fixes one sample can push another out); an element that cannot
     // fit (longer than a thin domain) ends with the smallest violation found.
-    constexpr int max_rounds = 4;
+    constexpr int max_rounds = 8;
+    int outside = 0;
     for (auto& el : out.elements) {
         if (el.locked) continue;
-        for (int round = 0; round < max_rounds; ++round) {
+        for (int round = 0; round <= max_rounds; ++round) {
             Vec3 shift;
             double worst = 0.0;
             for (int s = 0; s < el.sample_count; ++s) {
@@ -276,9 +277,14 @@ void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension) {
                 if (squared_norm(d) > worst) worst = squared_norm(d), shift = d;
             }
             if (worst == 0.0) break;
+            if (round == max_rounds) {  // the bound: measured, not moved again
+                ++outside;
+                break;
+            }
             for (int s = 0; s < el.sample_count; ++s) out.samples[el.first_sample + s].p += shift;
         }
     }
+    return outside;
 }
 
 void update_poses(OutputState& state, const InputIndex&, int dimension) {

@@ -23,8 +23,9 @@ AssignReport assign_positions(OutputState& state, const Params& params, int thre
                               const Domain* domain = nullptr);
 
 // Translates elements that still leave the domain back inside, as a whole (run once
-// at the end of synthesis so the result lies in the domain).
-void keep_inside_domain(Arrangement& out, const Domain& domain, int dimension);
+// at the end of synthesis so the result lies in the domain). Returns how many still
+// have a sample outside after the bounded rounds (an element longer than a thin domain).
+int keep_inside_domain(Arrangement& out, const Domain& domain, int dimension);
 
 // Best rigid motion (Kabsch), shared with element geometry: core/rigid_fit.hpp.
 using core::best_rigid_fit;

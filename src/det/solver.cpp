@@ -174,6 +174,10 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
                                   " elements are still closer to a neighbour than the exemplar allows after " +
                                   std::to_string(fixed.rounds) + " rounds");
     }
+    // Last: the repair's pushes and fills may have left a sample just outside.
+    if (const int outside = det::keep_inside_domain(state.arrangement, domain, params.dimension); outside > 0)
+        stats.notes.push_back(std::to_string(outside) + " elements do not fit inside the domain; each is left where "
+                              "its samples are least outside");
     det::update_poses(state, index, params.dimension);
     if (options.physics) {
         const PhysicsReport after = measure_physics(state.arrangement, domain, physics.gravity, physics.tolerance);

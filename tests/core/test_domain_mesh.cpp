@@ -14,6 +14,8 @@
 #include "tessera/domain.hpp"
 #include "tessera/error.hpp"
 #include "tessera/mesh.hpp"
+#include "core/triangle_tree.hpp"
+#include "core/winding_number.hpp"
 
 using namespace tessera;
 
@@ -188,4 +190,62 @@ TEST(MeshIo, ObjErrorsNameFileAndLine) {
         EXPECT_EQ(e.kind(), ErrorKind::io);
     }
     std::filesystem::remove(obj);
+}
+
+namespace {
+
+// The exact references: generalized winding number, and the nearest triangle by brute force.
+bool inside_mesh(const TriangleMesh& m, const Vec3& p) { return std::abs(core::generalized_winding_number(m, p)) >= 0.5; }
+
+double surface_distance(const TriangleMesh& m, const Vec3& p) {
+    double d2 = INFINITY;
+    for (const auto& t : m.triangles)
+        d2 = std::min(d2, core::triangle_distance_squared(p, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]));
+    return std::sqrt(d2);
+}
+
+// Points within a cell or so of the torus' surface, where voxels are unreliable.
+std::vector<Vec3> points_near_torus(double ring, double tube, double spread, int count) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> angle(0, 2 * M_PI), offset(-spread, spread);
+    std::vector<Vec3> points;
+    for (int i = 0; i < count; ++i) {
+        const double u = angle(rng), v = angle(rng), r = tube + offset(rng);
+        const double rho = ring + r * std::cos(v);
+        points.push_back({rho * std::cos(u), rho * std::sin(u), r * std::sin(v)});
+    }
+    return points;
+}
+
+}  // namespace
+
+TEST(DomainMesh, InsideOfATorusIsExactNotTheVoxels) {
+    const TriangleMesh m = test::torus(1.0, 0.35);
+    const Domain d = Domain::mesh(m, 32, "torus");
+    int wrong = 0, voxel_wrong = 0;
+    for (const Vec3& p : points_near_torus(1.0, 0.35, 0.08, 4000)) {
+        const bool truth = inside_mesh(m, p);
+        wrong += d.inside(p) != truth;
+        voxel_wrong += (d.occupancy(p) >= 0.5) != truth;
+    }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(voxel_wrong, 100) << "the test points must be where the voxels alone are wrong";
+    EXPECT_FALSE(d.inside({0, 0, 0})) << "the hole through the torus";
+    EXPECT_TRUE(d.inside({1, 0, 0}));
+}
+
+TEST(DomainMesh, InsideOfAThinShellIsExact) {
+    const TriangleMesh m = test::torus(1.0, 0.35);
+    const double thickness = 0.06;  // about one cell of the grid
+    const Domain d = Domain::shell(m, thickness, 48, "torus");
+    int wrong = 0, in = 0;
+    for (const Vec3& p : points_near_torus(1.0, 0.35, 0.1, 3000)) {
+        const bool truth = inside_mesh(m, p) && surface_distance(m, p) <= thickness;
+        wrong += d.inside(p) != truth;
+        in += truth;
+    }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(in, 500);
+    // closest_inside lands in the exact shell.
+    for (const Vec3& p : points_near_torus(1.0, 0.35, 0.3, 300)) EXPECT_TRUE(d.inside(d.closest_inside(p)));
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "metrics/field_data.hpp"
+#include "test_meshes.hpp"
 #include "tessera/tessera.hpp"
 
 using namespace tessera;
@@ -92,6 +93,25 @@ TEST(DetQuality, ExamplesHaveNoHolesAndNoCrowdedElements) {
             EXPECT_LE(hole, 1.3 * exemplar_hole) << c.name << ": hole " << hole << " vs the exemplar's " << exemplar_hole;
         }
         EXPECT_GE(inside_fraction(out), 0.995) << c.name;
+    }
+}
+
+// A mesh with a hole through it, and a thin shell: the samples lie inside the exact
+// domain (winding number, exact surface distance), not only inside its voxels.
+TEST(DetQuality, SamplesStayInsideATorusAndAThinShell) {
+    const TriangleMesh torus = test::torus(6.0, 2.5);
+    struct Case {
+        std::string example, what;
+        Domain domain;
+    };
+    for (const Case& c : std::vector<Case>{{"rods_3d", "torus", Domain::mesh(torus, 64, "torus")},
+                                           {"spheres_3d", "thin shell", Domain::shell(torus, 1.2, 64, "torus")}}) {
+        const Exemplar ex = example(c.example);
+        DetOptions o;
+        o.iterations = 8;
+        const Arrangement out = synthesize_det(ex, c.domain, o);
+        ASSERT_GT(out.elements.size(), 100u) << c.what;
+        EXPECT_GE(inside_fraction(out), 0.995) << c.example << " in the " << c.what;
     }
 }
 
