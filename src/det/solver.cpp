@@ -13,6 +13,7 @@
 #include "det/input_index.hpp"
 #include "det/layers.hpp"
 #include "det/pair_relaxation.hpp"
+#include "det/physics_guard.hpp"
 #include "det/type_exchange.hpp"
 #include "det/vacancies.hpp"
 #include "det/search.hpp"
@@ -136,6 +137,7 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     PhysicsOptions physics = options.physics_options;
     if (options.physics && physics.gravity == Vec3{})
         physics.gravity = params.gravity.vector() * (9.81 * physics.units_per_metre);
+    det::PhysicsGuard guard(physics, domain);
     for (int it = 0; it < options.iterations; ++it) {
         const auto ti = Clock::now();
         const double energy = det::search_step(state, index, domain, params, search);
@@ -145,13 +147,12 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
         if (!assigned.cg_converged) ++stats.solver_bound_hits;
         if (options.physics) {  // the interleaved solver: extra steps after search and assign
             if (it == 0) {
-                const PhysicsReport before =
-                    measure_physics(state.arrangement, domain, physics.gravity, physics.tolerance);
+                const PhysicsReport before = guard.measure(state.arrangement);
                 stats.penetrations_before = before.interpenetrating_pairs;
                 stats.max_depth_before = before.max_depth;
                 stats.floating_before = before.floating;
             }
-            step_physics(state.arrangement, domain, physics);
+            guard.step(state.arrangement);
         }
         keep_bounds(state, exemplar, domain, params, tails, repair, vacancies, it + 1);
         report(progress, {"iteration", it, options.iterations, energy, seconds_since(t0)});
@@ -180,7 +181,19 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
                               "its samples are least outside");
     det::update_poses(state, index, params.dimension);
     if (options.physics) {
-        const PhysicsReport after = measure_physics(state.arrangement, domain, physics.gravity, physics.tolerance);
+        // The final repair moved elements after the last physics step: settle them, guarded.
+        PhysicsReport reference;
+        reference.interpenetrating_pairs = stats.penetrations_before;
+        reference.floating = stats.floating_before;
+        guard.settle(state.arrangement, reference);
+        if (guard.undone() > 0)
+            stats.notes.push_back("physics: " + std::to_string(guard.undone()) + " of " + std::to_string(guard.steps()) +
+                                  " steps undone (they raised the interpenetrating pairs or the floating elements)");
+        const PhysicsReport after = guard.measure(state.arrangement);
+        if (after.interpenetrating_pairs > stats.penetrations_before || after.floating > stats.floating_before)
+            stats.notes.push_back("physics: the result has more interpenetrating pairs or floating elements than "
+                                  "before the first step (the iterations moved them; every physics step that "
+                                  "raised them was undone)");
         stats.physics = true;
         stats.penetrations_after = after.interpenetrating_pairs;
         stats.max_depth_after = after.max_depth;
