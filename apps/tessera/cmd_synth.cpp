@@ -83,7 +83,7 @@ struct SynthArgs {
 // The flags that belong to one method only.
 const std::vector<std::string> det_only_flags = {
     "--radius", "--k",       "--search",           "--matching", "--alpha",   "--lambda",        "--patch-size",
-    "--patch-candidates", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field",
+    "--patch-candidates", "--relax-sweeps", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field",
     "--boundary", "--boundary-distance"};
 const std::vector<std::string> pcf_only_flags = {"--max-fails",      "--grid-cells", "--epsilon0",
                                                  "--epsilon-step",   "--convergence", "--outlier-rounds",
@@ -118,6 +118,8 @@ void check_options(SynthArgs& args) {
         fail_option("--patch-size must be > 0, or 0 for automatic; got " + format_number(d.patch_size));
     if (d.patch_candidates < 1)
         fail_option("--patch-candidates must be >= 1, got " + std::to_string(d.patch_candidates));
+    if (d.relax_sweeps < 0 || d.relax_sweeps > 1000)
+        fail_option("--relax-sweeps must be from 0 to 1000, got " + std::to_string(d.relax_sweeps));
 
     // --method pcf: the shared flags go into PcfSynthOptions; --iterations bounds the
     // refinement sweeps per class (default 100 there).
@@ -313,6 +315,9 @@ Subcommand add_synth_command(CLI::App& app) {
         ->capture_default_str();
     add_integer_option(*cmd, "--patch-candidates", args->det.patch_candidates,
                     "Random candidate patches tried per cell at initialization (>= 1).");
+    add_integer_option(*cmd, "--relax-sweeps", args->det.relax_sweeps,
+                       "det, single-sample elements: sweeps of the pair-correlation relaxation after the "
+                       "iterations (small moves towards the exemplar's pair correlation; 0 = off, at most 1000).");
     cmd->add_flag("--physics", args->det.physics,
                   "Interleaved physics: after every iteration, rigid-body steps (Bullet) resolve "
                   "interpenetration and let elements settle under gravity; reports interpenetration and "

@@ -49,6 +49,7 @@ void apply_det(tessera::DetOptions& o, const std::string& key, const py::handle&
     else if (key == "lambda_") o.lambda = number(v, key);
     else if (key == "patch_size") o.patch_size = number(v, key);
     else if (key == "patch_candidates") o.patch_candidates = integer(v, key);
+    else if (key == "relax_sweeps") o.relax_sweeps = integer(v, key);
     else if (key == "physics") o.physics = get<bool>(v, key, "True or False");
     else if (key == "physics_substeps") o.physics_options.substeps = integer(v, key);
     else if (key == "floor_distance") o.floor_distance = number(v, key);
@@ -190,6 +191,7 @@ void bind_synthesize(py::module_& m) {
         det["radius"] = d.radius, det["k"] = d.k, det["search"] = tessera::to_string(d.search);
         det["matching"] = tessera::to_string(d.matching), det["alpha"] = d.alpha, det["lambda_"] = d.lambda;
         det["patch_size"] = d.patch_size, det["patch_candidates"] = d.patch_candidates;
+        det["relax_sweeps"] = d.relax_sweeps;
         det["physics"] = d.physics, det["physics_substeps"] = d.physics_options.substeps;
         det["floor_distance"] = d.floor_distance, det["boundary_distance"] = d.boundary_distance;
         pcf["seed"] = p.seed, pcf["threads"] = p.threads, pcf["iterations"] = p.max_iterations;

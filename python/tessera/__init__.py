@@ -37,6 +37,7 @@ __all__ = [
 
 _DEFAULTS = _tessera.default_options()
 _DET_ONLY = ("radius", "k", "search", "matching", "alpha", "lambda_", "patch_size", "patch_candidates",
+             "relax_sweeps",
              "physics", "physics_substeps", "gravity", "floor_distance", "boundary", "boundary_distance",
              "field")
 _PCF_ONLY = ("max_fails", "grid_cells", "epsilon0", "epsilon_step", "convergence", "outlier_rounds",
@@ -112,7 +113,8 @@ def render(data, path, width=800, meshes="auto", legend=True):
 def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterations=None,
                threads=0, progress=None,
                radius=0.0, k=4, search="kcoherence", matching="greedy", alpha=-1.0, lambda_=-1.0,
-               patch_size=0.0, patch_candidates=16, physics=False, physics_substeps=5, gravity=None,
+               patch_size=0.0, patch_candidates=16, relax_sweeps=4, physics=False, physics_substeps=5,
+               gravity=None,
                floor_distance=0.0, boundary=None, boundary_distance=0.0, field=None,
                max_fails=1000, grid_cells=64, epsilon0=0.0, epsilon_step=0.001, convergence=0.001,
                outlier_rounds=2, sigma=0.25, step=0.1, extent=5.0):
@@ -140,7 +142,8 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
     det options (docs/cli.md and `tessera synth --help` give the details):
       radius (0 = automatic), k, search ("kcoherence" | "exhaustive"), matching ("greedy" |
       "hungarian"), alpha and lambda_ (negative = automatic), patch_size (0 = automatic),
-      patch_candidates, physics, physics_substeps, gravity ("-z", or a vector), floor_distance,
+      patch_candidates, relax_sweeps (0 = no pair-correlation relaxation), physics,
+      physics_substeps, gravity ("-z", or a vector), floor_distance,
       boundary ("-x,+x" or ["-x", "+x"]) with boundary_distance, field (the --field forms,
       e.g. "vortex:5,5" or "grid:FILE.json").
     pcf options: max_fails, grid_cells, epsilon0, epsilon_step, convergence, outlier_rounds,
@@ -153,7 +156,8 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
     if method not in ("det", "pcf"):
         raise OptionError("method must be 'det' or 'pcf', got %r" % (method,))
     given = dict(radius=radius, k=k, search=search, matching=matching, alpha=alpha, lambda_=lambda_,
-                 patch_size=patch_size, patch_candidates=patch_candidates, physics=physics,
+                 patch_size=patch_size, patch_candidates=patch_candidates, relax_sweeps=relax_sweeps,
+                 physics=physics,
                  physics_substeps=physics_substeps, gravity=gravity, floor_distance=floor_distance,
                  boundary=boundary, boundary_distance=boundary_distance, field=field,
                  max_fails=max_fails, grid_cells=grid_cells, epsilon0=epsilon0,

@@ -9,6 +9,7 @@ import tessera
 @pytest.mark.parametrize("kwargs, needle", [
     (dict(radius=-1.0), "radius"),
     (dict(k=0), "k must be >= 1"),
+    (dict(relax_sweeps=-1), "relax_sweeps must be from 0 to 1000"),
     (dict(search="fast"), "search must be kcoherence or exhaustive"),
     (dict(matching="best"), "matching must be greedy or hungarian"),
     (dict(iterations=-2), "iterations"),

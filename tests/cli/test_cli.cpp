@@ -348,7 +348,7 @@ TEST_F(CliHelp, EverySubcommandHasHelp) {
     for (const char* flag :
          {"--scale FLOAT=2", "--seed", "--iterations INT=10", "--radius", "--threads", "--preview",
           "--input-domain", "--domain", "--k INT=4", "--search TEXT=kcoherence", "--matching TEXT=greedy",
-          "--alpha", "--lambda", "--patch-size", "--quiet"})
+          "--alpha", "--lambda", "--patch-size", "--relax-sweeps INT=4", "--quiet"})
         EXPECT_NE(synth.out.find(flag), std::string::npos) << flag;
 }
 
@@ -447,6 +447,7 @@ const ErrorCase error_cases[] = {
     {"negative_iterations", "", "", synth_poisson + "--iterations -1", 2, {"--iterations"}},
     {"negative_threads", "", "", synth_poisson + "--threads -1", 2, {"--threads"}},
     {"zero_k", "", "", synth_poisson + "--k 0", 2, {"--k"}},
+    {"negative_relax_sweeps", "", "", synth_poisson + "--relax-sweeps -1", 2, {"--relax-sweeps"}},
     {"unknown_search", "", "", synth_poisson + "--search fast", 2, {"--search", "fast"}},
     {"unknown_matching", "", "", synth_poisson + "--matching best", 2, {"--matching", "best"}},
     {"unknown_method", "", "", synth_poisson + "--method mcmc", 2, {"--method", "mcmc"}},
