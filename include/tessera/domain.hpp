@@ -73,13 +73,15 @@ public:
     // The volume enclosed by a triangle mesh (OBJ or ASCII PLY), on a voxel grid with
     // `resolution` voxels along its longest axis (16..1024). Inside is decided by the
     // generalized winding number (>= 1/2 in magnitude), so small cracks, open or
-    // non-manifold meshes still work (see notes()). Throws Error(domain) if the mesh
+    // non-manifold meshes still work (see notes()); inside(p) is exact at any point, not
+    // the voxels' (the voxels serve occupancy and the distance queries). Throws Error(domain) if the mesh
     // encloses no volume, Error(io)/Error(input) for unreadable / malformed files.
     static Domain mesh(const std::string& path, int resolution = 128);
     static Domain mesh(const TriangleMesh& mesh, int resolution = 128, const std::string& name = "mesh");
 
     // The band of the mesh's volume within `thickness` of its surface (for surface
-    // synthesis). Throws as mesh(), and Error(domain) if thickness is not > 0.
+    // synthesis); inside(p) is exact (the mesh's inside and the exact distance to its
+    // triangles). Throws as mesh(), and Error(domain) if thickness is not > 0.
     static Domain shell(const std::string& path, double thickness, int resolution = 128);
     static Domain shell(const TriangleMesh& mesh, double thickness, int resolution = 128,
                         const std::string& name = "mesh");
@@ -111,7 +113,8 @@ public:
     double translated_overlap(const Vec3& d) const;
     // A point of the domain nearest to p (p itself when inside); inside(result) holds.
     // Exact for boxes and polygons; voxel kinds return a point on the segment to the
-    // nearest inside voxel centre, within about a cell of the boundary.
+    // nearest inside voxel centre, within about a cell of the boundary (meshes and
+    // shells: just inside their exact boundary, by bisection with the exact inside).
     Vec3 closest_inside(const Vec3& p) const;
     // Distance from p to the domain boundary, positive inside. For p inside it never
     // exceeds the true distance (voxel kinds subtract a cell diagonal), so callers may
