@@ -14,11 +14,6 @@ bool worse(const PhysicsReport& after, const PhysicsReport& before) {
     return after.interpenetrating_pairs > before.interpenetrating_pairs || after.floating > before.floating;
 }
 
-bool better(const PhysicsReport& after, const PhysicsReport& before) {
-    return !worse(after, before) &&
-           (after.interpenetrating_pairs < before.interpenetrating_pairs || after.floating < before.floating);
-}
-
 // The element-wise best of two measures: what a result must not exceed to beat both.
 PhysicsReport lower(const PhysicsReport& a, const PhysicsReport& b) {
     PhysicsReport r = a;
@@ -49,31 +44,20 @@ bool PhysicsGuard::step(Arrangement& out) {
 }
 
 int PhysicsGuard::settle(Arrangement& out, const PhysicsReport& reference) {
-    PhysicsReport current = measure(out);
-    const PhysicsReport bound = lower(current, reference);
-    std::vector<Element> kept_elements = out.elements;
-    std::vector<Sample> kept_samples = out.samples;
-    PhysicsReport kept = current;
-    bool kept_meets_bound = !worse(current, bound);
-    int kept_steps = 0;
+    const PhysicsReport bound = lower(measure(out), reference);
+    const std::vector<Element> elements = out.elements;
+    const std::vector<Sample> samples = out.samples;
     PhysicsOptions longer = options_;
+    // The first step that meets the bound is kept and settling ends there: longer steps
+    // pack the elements ever closer than the exemplar spaces them.
     for (int s = 0; s < kSettleSteps; ++s, longer.substeps *= 2) {
         ++steps_;
-        current = step_physics(out, domain_, longer);
-        // Keep a step that improves on the last kept state, or that first meets the bound.
-        const bool meets = !worse(current, bound);
-        if ((meets && !kept_meets_bound) || (meets && better(current, kept))) {
-            kept_elements = out.elements, kept_samples = out.samples, kept = current;
-            kept_meets_bound = true;
-            kept_steps = s + 1;
-        } else if (kept_meets_bound) {
-            break;  // settled: a longer step no longer helps
-        }
+        if (!worse(step_physics(out, domain_, longer), bound)) return s + 1;
     }
-    out.elements = std::move(kept_elements);
-    out.samples = std::move(kept_samples);
-    if (kept_steps == 0) ++undone_;
-    return kept_steps;
+    out.elements = elements;
+    out.samples = samples;
+    ++undone_;
+    return 0;
 }
 
 }  // namespace tessera::det

@@ -18,10 +18,10 @@ public:
 
     // One guarded step on `out`; returns whether it was kept.
     bool step(Arrangement& out);
-    // The last step, after the final repair: steps of growing length (at most kSettleSteps)
-    // while they lower the interpenetrating pairs or the floating elements without raising
-    // the other; none is kept that leaves the scene worse than `reference` (the measure
-    // before the first step) or than the scene before the settling. Returns the steps kept.
+    // The last step, after the final repair: steps of 1, 2, 4 ... times the sub-steps
+    // (cumulative, at most kSettleSteps) until the scene is no worse than `reference` (the
+    // measure before the first step) nor than before the settling; undone if none gets
+    // there. Returns the number of steps taken, 0 when undone.
     int settle(Arrangement& out, const PhysicsReport& reference);
     // The measure of `out` with the guard's gravity and tolerance.
     PhysicsReport measure(const Arrangement& out) const;

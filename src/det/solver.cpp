@@ -73,6 +73,18 @@ core::CrowdingRepairReport keep_bounds(det::OutputState& state, const Exemplar& 
     return fixed;
 }
 
+// The final repair moved elements after the last physics step: settle them, guarded,
+// and say how many steps the guard undid.
+void settle_physics(Arrangement& out, det::PhysicsGuard& guard, RunStats& stats) {
+    PhysicsReport reference;
+    reference.interpenetrating_pairs = stats.penetrations_before;
+    reference.floating = stats.floating_before;
+    guard.settle(out, reference);
+    if (guard.undone() > 0)
+        stats.notes.push_back("physics: " + std::to_string(guard.undone()) + " of " + std::to_string(guard.steps()) +
+                              " steps undone (they raised the interpenetrating pairs or the floating elements)");
+}
+
 }  // namespace
 
 Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const DetOptions& options,
@@ -175,20 +187,13 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
                                   " elements are still closer to a neighbour than the exemplar allows after " +
                                   std::to_string(fixed.rounds) + " rounds");
     }
-    // Last: the repair's pushes and fills may have left a sample just outside.
+    if (options.physics) settle_physics(state.arrangement, guard, stats);
+    // Last: the repair's pushes and fills (and the settling) may have left a sample just outside.
     if (const int outside = det::keep_inside_domain(state.arrangement, domain, params.dimension); outside > 0)
         stats.notes.push_back(std::to_string(outside) + " elements do not fit inside the domain; each is left where "
                               "its samples are least outside");
     det::update_poses(state, index, params.dimension);
     if (options.physics) {
-        // The final repair moved elements after the last physics step: settle them, guarded.
-        PhysicsReport reference;
-        reference.interpenetrating_pairs = stats.penetrations_before;
-        reference.floating = stats.floating_before;
-        guard.settle(state.arrangement, reference);
-        if (guard.undone() > 0)
-            stats.notes.push_back("physics: " + std::to_string(guard.undone()) + " of " + std::to_string(guard.steps()) +
-                                  " steps undone (they raised the interpenetrating pairs or the floating elements)");
         const PhysicsReport after = guard.measure(state.arrangement);
         if (after.interpenetrating_pairs > stats.penetrations_before || after.floating > stats.floating_before)
             stats.notes.push_back("physics: the result has more interpenetrating pairs or floating elements than "
