@@ -14,6 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # Colours of the classes in pictures ("color" of a type, docs/format.md) where the name is not
 # a colour already; CSS's "plum" is a pale lilac, so the plums get the fruit's dark purple.
 PLUM = "#6a3d7a"
+NOODLE = "#e0b84f"  # cooked-noodle yellow
 
 
 def write(name, dimension, domain_max, types, elements, description):
@@ -281,7 +282,7 @@ def noodles_2d():
             continue
         placed.append(pts)
         els.append({"type": "noodle", "samples": [[r4(x), r4(y)] for x, y in pts], "radius": 0.1})
-    write("noodles_2d", 2, size, [{"name": "noodle", "rigid": False}], els,
+    write("noodles_2d", 2, size, [{"name": "noodle", "rigid": False, "color": NOODLE}], els,
           "Deformable noodles of 8 samples (spacing 0.3), gently bent and mostly along x, packed "
           "without touching; centroids in a 12 x 12 window of a periodic pattern.")
 
