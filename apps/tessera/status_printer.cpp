@@ -59,9 +59,9 @@ void StatusPrinter::show(const tessera::ProgressEvent& event, const std::string&
         print_held_locked();
         return;
     }
-    // A stage's last line is always shown (the last iteration before relaxation, say), so a
-    // held line of another stage is printed before this one replaces it.
-    if (held_ && held_stage_ != event.stage) print_held_locked();
+    // The last iteration's line (its final energy) is always shown: held, it is printed
+    // before a later stage's line replaces it.
+    if (held_ && held_last_iteration_ && event.stage != "iteration") print_held_locked();
     const auto now = Clock::now();
     if (!last_line_ || now - *last_line_ >= std::chrono::duration<double>(timing_.min_interval)) {
         held_.reset();
@@ -69,7 +69,7 @@ void StatusPrinter::show(const tessera::ProgressEvent& event, const std::string&
         return;
     }
     held_ = line;
-    held_stage_ = event.stage;
+    held_last_iteration_ = event.stage == "iteration" && event.iteration + 1 >= event.iterations;
     lock.unlock();
     wake_.notify_all();
 }

@@ -9,9 +9,9 @@
 namespace tessera {
 
 struct ProgressEvent {
-    std::string stage;       // "init", "search", "assign", "done", ...
-    int iteration = 0;       // 0-based iteration index; -1 outside the iterations
-    int iterations = 0;      // total iterations planned
+    std::string stage;       // det: "init", "patches", "fill", "iteration", "relax", "repair", "settle", "done"
+    int iteration = 0;       // 0-based step of the stage (iteration, sweep); -1 for a stage's start
+    int iterations = 0;      // total steps of the stage (iterations, sweeps) planned
     double energy = 0.0;     // current energy (Eq. 2), 0 when not known yet
     double elapsed_s = 0.0;  // seconds since the method started
 };

@@ -199,7 +199,8 @@ struct Worker {
 }  // namespace
 
 PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& domain, const std::vector<char>& held,
-                                             int sweeps, std::uint64_t seed, int threads) const {
+                                             int sweeps, std::uint64_t seed, int threads,
+                                             const std::function<void(int)>& after_sweep) const {
     Report report;
     if (!applies_ || out.types.size() != static_cast<size_t>(types_) || sweeps <= 0) return report;
     const int dim = out.dimension, n = static_cast<int>(out.elements.size());
@@ -348,6 +349,7 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
                 report.moves += moved[t];
             }
         }
+        if (after_sweep) after_sweep(sweep);
     }
     report.after = error();
     return report;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "det/model.hpp"
@@ -34,9 +35,10 @@ public:
         double after = 0.0;
     };
     // Relaxes `out` for `sweeps` sweeps; held[e] != 0 (may be empty) keeps element e.
-    // Deterministic for any thread count.
+    // Deterministic for any thread count. `after_sweep(s)`, when given, is called after
+    // sweep s (0-based), for progress.
     Report relax(Arrangement& out, const Domain& domain, const std::vector<char>& held, int sweeps,
-                 std::uint64_t seed, int threads) const;
+                 std::uint64_t seed, int threads, const std::function<void(int)>& after_sweep = {}) const;
 
 private:
     bool applies_ = false;

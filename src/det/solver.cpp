@@ -100,7 +100,9 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     report(progress, {"init", -1, options.iterations, 0.0, seconds_since(t0)});
     const det::InputIndex index = det::build_input_index(
         exemplar, params, options.search == SearchMode::kcoherence ? options.k : 0, threads);
+    report(progress, {"patches", -1, options.iterations, 0.0, seconds_since(t0)});
     det::InitResult init = det::initialize_patches(exemplar, index, domain, params, options);
+    report(progress, {"fill", -1, options.iterations, 0.0, seconds_since(t0)});
     // The exemplar's close-distance tails bound the output's (core/crowding_repair.hpp), and
     // its largest hole the output's (det/vacancies.hpp).
     const core::CrowdingBounds tails(exemplar);
@@ -172,9 +174,10 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
     if (const det::PairRelaxation relaxation(exemplar, params); relaxation.applies() && options.relax_sweeps > 0) {
         state.arrangement.update_positions();
         hold_floor_levels(repair, state.arrangement, domain, params);
-        relaxation.relax(state.arrangement, domain, repair.held_level, options.relax_sweeps, options.seed, threads);
-        report(progress, {"relax", options.iterations, options.iterations, 0.0, seconds_since(t0)});
+        relaxation.relax(state.arrangement, domain, repair.held_level, options.relax_sweeps, options.seed, threads,
+                         [&](int sweep) { report(progress, {"relax", sweep, options.relax_sweeps, 0.0, seconds_since(t0)}); });
     }
+    report(progress, {"repair", -1, options.iterations, 0.0, seconds_since(t0)});
     det::keep_inside_domain(state.arrangement, domain, params.dimension);
     state.arrangement.update_positions();
     if (det::drop_beyond_margin({state.arrangement, state.match, state.source_element}, exemplar, domain, params) > 0)
@@ -187,7 +190,10 @@ Arrangement synthesize_det(const Exemplar& exemplar, const Domain& domain, const
                                   " elements are still closer to a neighbour than the exemplar allows after " +
                                   std::to_string(fixed.rounds) + " rounds");
     }
-    if (options.physics) settle_physics(state.arrangement, guard, stats);
+    if (options.physics) {
+        report(progress, {"settle", -1, options.iterations, 0.0, seconds_since(t0)});
+        settle_physics(state.arrangement, guard, stats);
+    }
     // Last: the repair's pushes and fills (and the settling) may have left a sample just outside.
     if (const int outside = det::keep_inside_domain(state.arrangement, domain, params.dimension); outside > 0)
         stats.notes.push_back(std::to_string(outside) + " elements do not fit inside the domain; each is left where "
