@@ -1,5 +1,7 @@
 // synthesize_pcf from an exemplar: analyze_distribution + synthesis of the model, with
-// the exemplar's element types (meshes, flags) carried over to the output by name.
+// the exemplar's element types (meshes, flags) carried over to the output by name, then
+// the crowding repair against the exemplar's close-distance tails (synth_repair.hpp).
+#include "pcf/synth_repair.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace tessera {
@@ -15,6 +17,7 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
         type = exemplar.types[t];
         type.depends_on = depends_on;
     }
+    pcf::repair_output(exemplar, domain, options, out);
     return out;
 }
 
