@@ -260,9 +260,10 @@ void State::remove(int i) {
     add_pairs(i, -1.0);
 }
 
-State::Snapshot State::snapshot(int c) const {
+State::Snapshot State::snapshot(int c, const std::vector<int>& elements) const {
     Snapshot snap;
-    for (int i : members[c]) {
+    snap.elements = elements;
+    for (int i : elements) {
         snap.positions.push_back(elems[i].p);
         snap.profiles.push_back(profiles[i]);
     }
@@ -271,8 +272,8 @@ State::Snapshot State::snapshot(int c) const {
 }
 
 void State::restore(int c, const Snapshot& snap) {
-    for (size_t k = 0; k < members[c].size(); ++k) {
-        const int i = members[c][k];
+    for (size_t k = 0; k < snap.elements.size(); ++k) {
+        const int i = snap.elements[k];
         elems[i].p = snap.positions[k];
         profiles[i] = snap.profiles[k];
     }
@@ -281,6 +282,22 @@ void State::restore(int c, const Snapshot& snap) {
         refresh(class_terms[c][k]);
     }
     rebuild_grid(c);
+}
+
+std::vector<int> State::near_members(int c, const std::vector<int>& around, double radius) const {
+    std::vector<char> in(elems.size(), 0);
+    for (int a : around) {
+        in[a] = 1;
+        if (elems[a].placed)
+            for_each_near(c, elems[a].p, radius, [&](int j) {
+                in[j] = 1;
+                return true;
+            });
+    }
+    std::vector<int> out;
+    for (int i : members[c])
+        if (in[i]) out.push_back(i);
+    return out;
 }
 
 void State::rebuild_grid(int c) {

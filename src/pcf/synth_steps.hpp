@@ -59,6 +59,10 @@ struct RefineReport {
     bool converged = false;
 };
 
+// The neighbourhood of a re-placed element of class c that a local refinement moves
+// with it: two r_max beyond contact (the first rings of neighbours).
+double local_reach(const State& s, int c);
+
 // Refinement of `elements` (placed, of class c) by Eq. 4 to 6 against the class's PCFs,
 // at most max_iterations sweeps; on_sweep(energy) after each one.
 RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence,

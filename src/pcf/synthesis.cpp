@@ -28,8 +28,12 @@ using core::seconds_since;
 // envelope term of Eq. 11: relative to the bound) makes it an outlier (section 6.4):
 // above its upper envelope by 90% of the envelope, or below 10% of its lower envelope.
 constexpr double kOutlierTolerance = 0.9;
-// At most this share of a class is re-placed per outlier round (the worst first).
+// At most this share of a class, and at most kOutlierMax elements, are re-placed per
+// outlier round (the worst first). The re-placement of a complete class ends in grid
+// search (every dart fails), 64 x 64 candidates per element: the count bound keeps a
+// round's cost independent of the class's size.
 constexpr double kOutlierShare = 0.1;
+constexpr size_t kOutlierMax = 16;
 // An outlier round may raise the class's PCF error (sum of squares) by this much.
 constexpr double kOutlierSlack = 0.1;
 
@@ -231,22 +235,38 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             if (outliers.empty()) break;
             std::stable_sort(outliers.begin(), outliers.end(),
                              [&](int a, int b) { return violation[a] > violation[b]; });
-            const size_t cap = static_cast<size_t>(std::max(1.0, std::floor(kOutlierShare * members.size())));
-            if (outliers.size() > cap) outliers.resize(cap);
+            const size_t found = outliers.size();
+            const size_t share = static_cast<size_t>(std::max(1.0, std::floor(kOutlierShare * members.size())));
+            outliers.resize(std::min({found, share, kOutlierMax}));
             std::vector<int> elements;
             for (int k : outliers) elements.push_back(members[k]);
             std::sort(elements.begin(), elements.end());  // members are largest radius first
 
+            // Only the re-placed elements and the class's elements near where they were or
+            // now are take part (section 6.4 refines the class; refining its far parts
+            // again costs the class's size per sweep and moves little).
+            const double reach = pcf::local_reach(state, c);
+            std::vector<int> local = state.near_members(c, elements, reach);
             const double before = class_error();
-            const pcf::State::Snapshot snap = state.snapshot(c);
+            const pcf::State::Snapshot snap = state.snapshot(c, local);
             for (int i : elements) state.remove(i);
             run_init(c, elements, round);
-            const int bound_hit = run_refine(c, members, outlier_sweeps);
+            std::vector<int> moved = state.near_members(c, elements, reach);
+            moved.insert(moved.end(), local.begin(), local.end());
+            std::sort(moved.begin(), moved.end());
+            moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+            local = std::move(moved);
+            const pcf::State::Snapshot wider = state.snapshot(c, local);  // the new neighbours too
+            const int bound_hit = run_refine(c, local, outlier_sweeps);
             const double after = class_error();
-            const std::string what = "outlier round " + std::to_string(round) + " of class '" + model.classes[c] +
-                                     "': " + std::to_string(elements.size()) + " of " +
-                                     std::to_string(members.size()) + " elements re-placed";
+            std::string what = "outlier round " + std::to_string(round) + " of class '" + model.classes[c] + "': " +
+                               std::to_string(elements.size()) + " of " + std::to_string(members.size()) +
+                               " elements re-placed";
+            if (found > elements.size())
+                what += " (" + std::to_string(found) + " outliers; at most " + std::to_string(kOutlierMax) +
+                        " and 10% of the class per round)";
             if (after > before * (1.0 + kOutlierSlack)) {
+                state.restore(c, wider);  // the refinement's moves, then the re-placement
                 state.restore(c, snap);
                 stats.notes.push_back(what + ", undone (its PCF error rose from " + format(before) + " to " +
                                       format(after) + ")");
