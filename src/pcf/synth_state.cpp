@@ -1,6 +1,8 @@
 // The incremental PCF state of synthesis (synth_state.hpp).
 #include "pcf/synth_state.hpp"
 
+#include "pcf/sparse_classes.hpp"
+
 #include <algorithm>
 
 namespace tessera::pcf {
@@ -99,7 +101,10 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
         if (min_of(radii[t.child]) <= 0.0 && min_of(radii[t.parent]) <= 0.0) reach = std::max(reach, x_limit * r_max);
         t.reach = reach * (1.0 + 1e-9);
         reach_max = std::max(reach_max, t.reach);
-        class_terms[t.child].push_back(static_cast<int>(terms.size()));
+        // A class with few elements is placed without PCFs, and its children are placed
+        // without their PCFs on it (PcfSparseClass): the term stays empty.
+        if (!sparse_class(model, t.child) && !sparse_class(model, t.parent))
+            class_terms[t.child].push_back(static_cast<int>(terms.size()));
         terms.push_back(std::move(t));
     }
     for (int t = 0; t < static_cast<int>(terms.size()); ++t) refresh(t);
@@ -107,23 +112,30 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     // Separations, both ways: a class checks those placed before it (the others are empty).
     separations.assign(classes, {});
     separation_scale = 1.0 / (kFloor * axis.sigma);
+    const auto add = [&](int c, int other, double x) {
+        // Beyond contact x = 3 + gap / r_max; up to it a pair overlaps (d <= r1 + r2).
+        // `reach` leaves out the element's own radius, added per query.
+        Separation s;
+        s.other = other;
+        s.x = x;
+        const double ro = max_of(radii[other]);
+        s.reach = model.disks ? std::max(0.0, x - 3.0) * r_max + ro : x * r_max;
+        if (min_of(radii[c]) <= 0.0 && min_of(radii[other]) <= 0.0) s.reach = std::max(s.reach, x * r_max);
+        s.reach *= 1.0 + 1e-9;
+        separations[c].push_back(s);
+    };
     for (const PcfSeparation& sep : model.separations) {
         if (!(sep.x > 0.0)) continue;
-        const auto add = [&](int c, int other) {
-            // Beyond contact x = 3 + gap / r_max; up to it a pair overlaps (d <= r1 + r2).
-            // `reach` leaves out the element's own radius, added per query.
-            Separation s;
-            s.other = other;
-            s.x = sep.x;
-            const double ro = max_of(radii[other]);
-            s.reach = model.disks ? std::max(0.0, sep.x - 3.0) * r_max + ro : sep.x * r_max;
-            if (min_of(radii[c]) <= 0.0 && min_of(radii[other]) <= 0.0) s.reach = std::max(s.reach, sep.x * r_max);
-            s.reach *= 1.0 + 1e-9;
-            separations[c].push_back(s);
-        };
-        add(sep.a, sep.b);
-        add(sep.b, sep.a);
+        add(sep.a, sep.b, sep.x);
+        add(sep.b, sep.a, sep.x);
     }
+    // A class with few elements keeps its closest approach to every class, both ways.
+    for (const PcfSparseClass& sc : model.sparse)
+        for (int o = 0; o < classes; ++o) {
+            if (o == sc.cls || !(sc.closest[o] > 0.0)) continue;
+            add(sc.cls, o, sc.closest[o]);
+            add(o, sc.cls, sc.closest[o]);
+        }
 
     // The grid: cells of a quarter of the largest query radius (a query visits about 1.6
     // times the area of its disc), coarser if there would be too many.

@@ -12,6 +12,7 @@
 #include "core/parallel.hpp"
 #include "core/run_clock.hpp"
 #include "core/rng.hpp"
+#include "pcf/sparse_classes.hpp"
 #include "pcf/synth_steps.hpp"
 #include "tessera/error.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -97,6 +98,14 @@ void check_model(const PcfModel& m) {
             if (!std::isfinite(e.mean[k]) || !std::isfinite(e.lower[k]) || !std::isfinite(e.upper[k]))
                 bad_model("the PCF of " + m.classes[e.parent] + " -> " + m.classes[e.child] + " has a value that is not finite");
     }
+    for (const PcfSparseClass& sc : m.sparse)
+        if (sc.cls < 0 || sc.cls >= classes || static_cast<int>(sc.closest.size()) != classes ||
+            static_cast<int>(sc.tether.size()) != classes || !(std::isfinite(sc.spacing) && sc.spacing >= 0.0))
+            bad_model("a sparse class needs a class, a spacing >= 0 and one closest approach and tether per class");
+    for (int c = 0; c < classes; ++c)
+        if (m.counts[c] < kPcfSparseCount && !pcf::sparse_class(m, c))
+            bad_model("class '" + m.classes[c] + "' has " + std::to_string(m.counts[c]) +
+                      " elements and no entry in the sparse classes");
     for (const PcfSeparation& sep : m.separations)
         if (sep.a < 0 || sep.a >= classes || sep.b < 0 || sep.b >= classes || sep.a == sep.b ||
             !(std::isfinite(sep.x) && sep.x >= 0.0))
@@ -128,6 +137,21 @@ std::string format(double v) {
     std::ostringstream s;
     s << v;
     return s.str();
+}
+
+// What the fallback for a class with few elements did, for the notes.
+std::string sparse_note(const PcfModel& m, const PcfSparseClass& sc, int placed) {
+    const int n = m.counts[sc.cls];
+    std::string note = "class '" + m.classes[sc.cls] + "' has " + std::to_string(n) + (n == 1 ? " element" : " elements") +
+                       " in the exemplar, too few for PCFs: its " + std::to_string(placed) +
+                       " elements were placed at random (same density) at least " + format(sc.spacing) +
+                       " apart, no closer to any class than in the exemplar";
+    std::string tethers;
+    for (size_t o = 0; o < sc.tether.size(); ++o)
+        if (sc.tether[o] > 0.0)
+            tethers += (tethers.empty() ? "" : ", ") + ("'" + m.classes[o] + "'") + " within x = " + format(sc.tether[o]);
+    if (!tethers.empty()) note += ", each with a " + tethers;
+    return note + " (its PCFs and its children's PCFs on it were not used)";
 }
 
 }  // namespace
@@ -202,6 +226,19 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             stats.notes.push_back("no grid cell was inside the domain: " + std::to_string(r.by_fallback) +
                                   " elements of " + name + when + " were placed at random points");
     };
+    // A class with too few elements for PCFs: the fallback of PcfSparseClass.
+    const auto run_sparse = [&](const PcfSparseClass& sc, const std::vector<int>& elements) {
+        const auto ti = Clock::now();
+        const pcf::SparseReport r = pcf::place_sparse(state, sc, elements, options.seed, tick);
+        init_seconds += seconds_since(ti);
+        stats.notes.push_back(sparse_note(model, sc, static_cast<int>(elements.size())));
+        if (r.by_bound > 0) {
+            ++stats.solver_bound_hits;
+            stats.notes.push_back("class '" + model.classes[sc.cls] + "': " + std::to_string(r.by_bound) +
+                                  " elements placed at the best of their darts (bound reached), up to " +
+                                  format(r.worst) + " r_max inside the fallback's distances");
+        }
+    };
     // Returns 1 when the refinement stopped at its sweep bound, not by convergence.
     const auto run_refine = [&](int c, const std::vector<int>& elements, int sweeps) {
         sweep_start = Clock::now();
@@ -212,6 +249,10 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     for (int c : model.order) {
         report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
         const std::vector<int>& members = state.members[c];
+        if (const PcfSparseClass* sparse = pcf::sparse_class(model, c)) {
+            run_sparse(*sparse, members);
+            continue;
+        }
         run_init(c, members, 0);
         stats.solver_bound_hits += run_refine(c, members, options.max_iterations);
         // Section 6.4: re-place the elements whose individual PCFs left the validity
@@ -295,8 +336,9 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             const int index = out.add_element(c, {e.p}, e.r);
             out.elements[index].id = static_cast<std::uint64_t>(index);
         }
-    double final_energy = 0.0;
-    for (int t = 0; t < static_cast<int>(state.terms.size()); ++t) final_energy += state.term_error(t);
+    double final_energy = 0.0;  // of the PCFs synthesis used (not those of the sparse classes)
+    for (const std::vector<int>& ts : state.class_terms)
+        for (int t : ts) final_energy += state.term_error(t);
     stats.final_energy = final_energy;
     stats.total_seconds = seconds_since(t0);
     report(progress, {"done", sweep_index, planned, final_energy, stats.total_seconds});
