@@ -37,6 +37,8 @@ constexpr double kOutlierShare = 0.1;
 constexpr size_t kOutlierMax = 16;
 // An outlier round may raise the class's PCF error (sum of squares) by this much.
 constexpr double kOutlierSlack = 0.1;
+// Initialisation reports progress this often (seconds of work) at most.
+constexpr double kTickSeconds = 0.25;
 
 [[noreturn]] void bad_option(const std::string& message) { throw Error(ErrorKind::option, message); }
 
@@ -203,7 +205,13 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     int sweep_index = 0;
     double init_seconds = 0.0;
     auto sweep_start = Clock::now();
-    const auto tick = [&] { report(progress, {"init", -1, planned, 0.0, seconds_since(t0)}); };
+    // Placements report at most every kTickSeconds (a grid search takes up to ~50 ms).
+    auto last_tick = Clock::now();
+    const auto tick = [&] {
+        if (seconds_since(last_tick) < kTickSeconds) return;
+        last_tick = Clock::now();
+        report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
+    };
     const auto on_sweep = [&](double energy) {
         stats.energy.push_back(energy);
         stats.iteration_seconds.push_back(seconds_since(sweep_start));
