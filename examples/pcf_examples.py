@@ -239,6 +239,23 @@ def dense_ecosystem():
             "in shade or sun. Full hierarchy: every species depends on all earlier (larger) ones.")
 
 
+def wide_radii():
+    """Disks whose radii span two orders of magnitude: a few large disks (radius 6 to 10),
+    medium ones (1.5 to 2.5) between them and many small ones (0.06 to 0.12) filling the
+    space left, none overlapping. A hole several large disks wide or clumped small disks
+    show at once; each class depends on the larger ones (the default chain)."""
+    s = Scene((100.0, 100.0), 47)
+    s.place("large", 14, lambda g: g.uniform(6.0, 10.0), lambda x, y, r: clear_of(s, x, y, r, "large", 4.0))
+    s.place("medium", 60, lambda g: g.uniform(1.5, 2.5),
+            lambda x, y, r: clear_of(s, x, y, r, "large", 0.5) and clear_of(s, x, y, r, "medium", 2.0))
+    s.place("small", 420, lambda g: g.uniform(0.06, 0.12),
+            lambda x, y, r: clear_of(s, x, y, r, "large", 0.3) and clear_of(s, x, y, r, "medium", 0.3) and
+            clear_of(s, x, y, r, "small", 2.2))
+    s.write("wide_radii", ["large", "medium", "small"],
+            "Disks with radii over two orders of magnitude (0.06 to 10): large, medium and small, "
+            "never overlapping; small disks fill the space between the larger ones.")
+
+
 if __name__ == "__main__":
     os.makedirs(HERE, exist_ok=True)
     toy_forest()
@@ -246,3 +263,4 @@ if __name__ == "__main__":
     droplets()
     table_set()
     dense_ecosystem()
+    wide_radii()

@@ -75,6 +75,26 @@ struct PcfSeparation {
     double x = 0.0;    // on the normalised axis
 };
 
+// A class with fewer than kPcfSparseCount elements (a forest's single aspen): its own
+// PCF has at most 6 pairs and its envelopes are those few curves, too little to place
+// anything by. Its PCFs stay in the model (measured like the others) but synthesis
+// places it by this fallback instead (docs/pcf_synthesis.md, "Classes with few
+// elements"): its density (the count per area), at least `spacing` between its own
+// elements, no closer to any class than its exemplar elements come (`closest`), and
+// each element within `tether` of an element of every parent class (the farthest
+// nearest-parent distance of its exemplar elements plus one kernel width). The PCFs
+// of its children on it are left out of their placement as well (they have at most 3
+// neighbours per reference); `closest` keeps the children off it instead.
+inline constexpr int kPcfSparseCount = 4;
+struct PcfSparseClass {
+    int cls = 0;
+    double spacing = 0.0;         // data units: the closest two of its elements (half the
+                                  // mean spacing sqrt(area / count) for a single element)
+    std::vector<double> closest;  // per class (normalised axis): its closest approach; own entry 0
+    std::vector<double> tether;   // per class (normalised axis): for parents, the farthest nearest-
+                                  // element distance; 0 for the other classes (no tether)
+};
+
 // The analysed exemplar: everything synthesis needs.
 struct PcfModel {
     std::vector<std::string> classes;        // element type names, in the exemplar's order
@@ -82,6 +102,7 @@ struct PcfModel {
     std::vector<int> order;                  // a topological order of the classes
     std::vector<PcfEnvelope> pcfs;           // one per class (within) and one per DAG edge
     std::vector<PcfSeparation> separations;  // one per pair of classes without an edge, (a, b) in index order
+    std::vector<PcfSparseClass> sparse;      // the classes with fewer than kPcfSparseCount elements, in index order
     std::vector<double> x;                   // the normalised axis: x_k = k * step
     std::vector<int> counts;                 // elements per class in the exemplar
     std::vector<std::vector<double>> radii;  // per class: the exemplar's radii, sorted largest first
@@ -93,7 +114,7 @@ struct PcfModel {
 
 // Analyses an exemplar (2D, single-sample elements). The dependency graph comes from the
 // types (ElementType::depends_on); a type without one depends on every earlier type.
-// Throws Error(input) naming the class for: a class with fewer than 2 elements, a
+// Throws Error(input) naming the class for: a class without elements, a
 // radius < 0, a dependency cycle (naming the classes on it) or an unknown class name;
 // Error(option) for bad settings; Error(input) for 3D data or multi-sample elements.
 PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSettings& settings = {});

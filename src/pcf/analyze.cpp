@@ -10,6 +10,7 @@
 #include "pcf/dependency_graph.hpp"
 #include "pcf/pcf_estimate.hpp"
 #include "pcf/pcf_math.hpp"
+#include "pcf/sparse_classes.hpp"
 #include "tessera/error.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -84,10 +85,10 @@ PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSetting
     }
     if (points.p.empty()) throw Error(ErrorKind::input, "PCF analysis: the exemplar has no elements");
     for (int c = 0; c < classes; ++c) {
-        if (model.counts[c] < 2)
-            throw Error(ErrorKind::input, "PCF analysis: class '" + model.classes[c] + "' has " +
-                                              std::to_string(model.counts[c]) + (model.counts[c] == 1 ? " element" : " elements") +
-                                              "; each class needs at least 2");
+        // A class with 1 to 3 elements is placed by the fallback of PcfSparseClass.
+        if (model.counts[c] < 1)
+            throw Error(ErrorKind::input, "PCF analysis: class '" + model.classes[c] +
+                                              "' has no elements; each class needs at least 1");
         std::sort(model.radii[c].begin(), model.radii[c].end(), std::greater<>());
     }
     model.parents = pcf::dependency_parents(exemplar.types);
@@ -115,6 +116,7 @@ PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSetting
                                                                 pcf::separation_cap(settings, model.disks));
     for (size_t q = 0; q < unrelated.size(); ++q)
         model.separations.push_back({unrelated[q].first, unrelated[q].second, closest[q]});
+    model.sparse = pcf::analyse_sparse_classes(points, model);
     return model;
 }
 

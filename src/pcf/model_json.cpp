@@ -15,6 +15,7 @@
 #include "pcf/dependency_graph.hpp"
 #include "pcf/pcf_estimate.hpp"
 #include "pcf/pcf_math.hpp"
+#include "pcf/sparse_classes.hpp"
 #include "tessera/error.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -25,7 +26,7 @@ using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
 constexpr const char* model_format = "tessera-pcf-model";
-constexpr int model_version = 2;
+constexpr int model_version = 3;
 
 class ModelReader {
 public:
@@ -50,9 +51,14 @@ public:
         if (!version.is_number_integer() || version.get<long long>() < 1 || version.get<long long>() > model_version)
             fail("version", "unsupported version " + version.dump() + " (this build reads versions 1 to " +
                                 std::to_string(model_version) + ")");
-        // Version 1 had no separations (models analysed before them synthesize without).
+        // Version 1 had no separations, version 2 no sparse classes (models analysed
+        // before them synthesize without).
         const bool separations = version.get<long long>() >= 2;
-        if (separations)
+        const bool sparse = version.get<long long>() >= 3;
+        if (sparse)
+            keys(doc, {"format", "version", "settings", "r_max", "area", "classes", "order", "x", "pcfs", "separations",
+                       "sparse"}, "");
+        else if (separations)
             keys(doc, {"format", "version", "settings", "r_max", "area", "classes", "order", "x", "pcfs", "separations"}, "");
         else
             keys(doc, {"format", "version", "settings", "r_max", "area", "classes", "order", "x", "pcfs"}, "");
@@ -65,6 +71,11 @@ public:
         read_axis(require(doc, "x", ""), m);
         read_pcfs(require(doc, "pcfs", ""), m);
         if (separations) read_separations(require(doc, "separations", ""), m);
+        if (sparse) read_sparse(require(doc, "sparse", ""), m);
+        for (size_t c = 0; c < m.classes.size(); ++c)
+            if (m.counts[c] < kPcfSparseCount && !pcf::sparse_class(m, static_cast<int>(c)))
+                fail("sparse", "class '" + m.classes[c] + "' has " + std::to_string(m.counts[c]) +
+                                   " elements: it needs an entry (fewer than " + std::to_string(kPcfSparseCount) + ")");
         return m;
     }
 
@@ -157,8 +168,8 @@ private:
                 fail(at(where, "name"), "class " + name.dump() + " is listed twice");
             m.classes.push_back(name.get<std::string>());
             const Json& count = v[c]["count"];
-            if (!count.is_number_integer() || count.get<long long>() < 2 || count.get<long long>() > 1'000'000'000)
-                fail(at(where, "count"), "must be an integer >= 2, got " + count.dump());
+            if (!count.is_number_integer() || count.get<long long>() < 1 || count.get<long long>() > 1'000'000'000)
+                fail(at(where, "count"), "must be an integer >= 1, got " + count.dump());
             m.counts.push_back(static_cast<int>(count.get<long long>()));
             m.radii.push_back(values(v[c]["radii"], at(where, "radii"), m.counts.back()));
             if (!std::is_sorted(m.radii.back().begin(), m.radii.back().end(), std::greater<>()))
@@ -237,6 +248,40 @@ private:
                                     : "missing the PCF of '" + m.classes[c] + "' on '" + m.classes[p] + "'");
     }
 
+    // Per class (name -> value) for every class but `own`; values >= 0.
+    std::vector<double> per_class(const Json& v, const PcfModel& m, int own, const std::string& where) const {
+        object(v, where);
+        std::vector<double> out(m.classes.size(), 0.0);
+        for (auto it = v.begin(); it != v.end(); ++it) {
+            const int o = class_index(Json(it.key()), m, at(where, it.key()));
+            if (o == own) fail(at(where, it.key()), "is the class itself");
+            out[o] = number(it.value(), at(where, it.key()));
+            if (out[o] < 0.0) fail(at(where, it.key()), "must be >= 0, got " + it.value().dump());
+        }
+        return out;
+    }
+
+    // One per class with fewer than kPcfSparseCount elements, in class order.
+    void read_sparse(const Json& v, PcfModel& m) const {
+        array(v, "sparse");
+        for (size_t q = 0; q < v.size(); ++q) {
+            const std::string where = at("sparse", q);
+            object(v[q], where);
+            keys(v[q], {"class", "spacing", "closest", "tether"}, where);
+            PcfSparseClass s;
+            s.cls = class_index(v[q]["class"], m, at(where, "class"));
+            if (m.counts[s.cls] >= kPcfSparseCount)
+                fail(at(where, "class"), "'" + m.classes[s.cls] + "' has " + std::to_string(m.counts[s.cls]) +
+                                             " elements, enough for its PCFs");
+            if (!m.sparse.empty() && m.sparse.back().cls >= s.cls) fail(where, "must be in class order, once each");
+            s.spacing = number(v[q]["spacing"], at(where, "spacing"));
+            if (s.spacing < 0.0) fail(at(where, "spacing"), "must be >= 0, got " + v[q]["spacing"].dump());
+            s.closest = per_class(v[q]["closest"], m, s.cls, at(where, "closest"));
+            s.tether = per_class(v[q]["tether"], m, s.cls, at(where, "tether"));
+            m.sparse.push_back(std::move(s));
+        }
+    }
+
     // Exactly one per pair of classes without a dependency between them, a before b.
     void read_separations(const Json& v, PcfModel& m) const {
         array(v, "separations");
@@ -309,7 +354,20 @@ std::string pcf_model_to_json(const PcfModel& m) {
         const OrderedJson item{{"a", name(sep.a)}, {"b", name(sep.b)}, {"x", sep.x}};
         out += (q == 0 ? "\n    " : ",\n    ") + item.dump();
     }
-    out += m.separations.empty() ? "]\n}\n" : "\n  ]\n}\n";
+    out += m.separations.empty() ? "]" : "\n  ]";
+    out += ",\n  \"sparse\": [";
+    for (size_t q = 0; q < m.sparse.size(); ++q) {
+        const PcfSparseClass& s = m.sparse[q];
+        OrderedJson closest = OrderedJson::object(), tether = OrderedJson::object();
+        for (size_t o = 0; o < m.classes.size(); ++o) {
+            if (static_cast<int>(o) == s.cls) continue;
+            closest[m.classes[o]] = s.closest.at(o);
+            if (s.tether.at(o) > 0.0) tether[m.classes[o]] = s.tether[o];
+        }
+        const OrderedJson item{{"class", name(s.cls)}, {"spacing", s.spacing}, {"closest", closest}, {"tether", tether}};
+        out += (q == 0 ? "\n    " : ",\n    ") + item.dump();
+    }
+    out += m.sparse.empty() ? "]\n}\n" : "\n  ]\n}\n";
     return out;
 }
 

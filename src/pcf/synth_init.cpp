@@ -121,7 +121,6 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
     std::uint64_t attempt = 0;  // dart throws of this class (and round): the key of their positions
     int fails = 0;              // successive rejections
     bool grid_mode = st.max_fails <= 0;
-    int since_tick = 0;
     // Draws a dart inside the domain (draws outside it are not candidates: they are skipped).
     const auto draw_inside = [&](Vec3& p) {
         for (int miss = 0; miss < 1000000; ++miss) {
@@ -227,10 +226,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
             s.begin_profile(p, scratch[0].profile);
             s.insert(i, scratch[0].profile);
         }
-        if (++since_tick == 64) {
-            since_tick = 0;
-            tick();
-        }
+        tick();  // the caller throttles it by time
     }
     return report;
 }

@@ -33,6 +33,10 @@ constexpr double kMoveTolerance = 0.25;
 // raised the relative PCF error of the dense ecosystem from 0.019 to 0.028).
 constexpr double kLowerTolerance = 0.05;
 
+// A local refinement (outlier rounds) moves the elements within this many r_max of the
+// re-placed ones (beyond contact): their first rings of neighbours.
+constexpr double kLocalReach = 2.0;
+
 // The refinement's stall test looks at the lowest error over this many sweeps.
 constexpr size_t kStallSweeps = 10;
 
@@ -279,6 +283,11 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
 
 }  // namespace
 
+double local_reach(const State& s, int c) {
+    const double r = s.members[c].empty() ? 0.0 : s.elems[s.members[c].front()].r;  // largest first
+    return kLocalReach * s.r_max + 2.0 * r;
+}
+
 RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence,
                     int threads, const std::function<void(double)>& on_sweep) {
     RefineReport report;
@@ -361,7 +370,7 @@ RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_i
         on_sweep(energy);
         if (energy < best_energy) {
             best_energy = energy;
-            best = s.snapshot(c);
+            best = s.snapshot(c, elements);
         }
         // Converged when the sweep moved the elements by less than convergence x r_max in
         // total (the paper's test), or when the error stalled: over the last kStallSweeps

@@ -1,6 +1,8 @@
 // The incremental PCF state of synthesis (synth_state.hpp).
 #include "pcf/synth_state.hpp"
 
+#include "pcf/sparse_classes.hpp"
+
 #include <algorithm>
 
 namespace tessera::pcf {
@@ -99,7 +101,10 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
         if (min_of(radii[t.child]) <= 0.0 && min_of(radii[t.parent]) <= 0.0) reach = std::max(reach, x_limit * r_max);
         t.reach = reach * (1.0 + 1e-9);
         reach_max = std::max(reach_max, t.reach);
-        class_terms[t.child].push_back(static_cast<int>(terms.size()));
+        // A class with few elements is placed without PCFs, and its children are placed
+        // without their PCFs on it (PcfSparseClass): the term stays empty.
+        if (!sparse_class(model, t.child) && !sparse_class(model, t.parent))
+            class_terms[t.child].push_back(static_cast<int>(terms.size()));
         terms.push_back(std::move(t));
     }
     for (int t = 0; t < static_cast<int>(terms.size()); ++t) refresh(t);
@@ -107,23 +112,30 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     // Separations, both ways: a class checks those placed before it (the others are empty).
     separations.assign(classes, {});
     separation_scale = 1.0 / (kFloor * axis.sigma);
+    const auto add = [&](int c, int other, double x) {
+        // Beyond contact x = 3 + gap / r_max; up to it a pair overlaps (d <= r1 + r2).
+        // `reach` leaves out the element's own radius, added per query.
+        Separation s;
+        s.other = other;
+        s.x = x;
+        const double ro = max_of(radii[other]);
+        s.reach = model.disks ? std::max(0.0, x - 3.0) * r_max + ro : x * r_max;
+        if (min_of(radii[c]) <= 0.0 && min_of(radii[other]) <= 0.0) s.reach = std::max(s.reach, x * r_max);
+        s.reach *= 1.0 + 1e-9;
+        separations[c].push_back(s);
+    };
     for (const PcfSeparation& sep : model.separations) {
         if (!(sep.x > 0.0)) continue;
-        const auto add = [&](int c, int other) {
-            // Beyond contact x = 3 + gap / r_max; up to it a pair overlaps (d <= r1 + r2).
-            // `reach` leaves out the element's own radius, added per query.
-            Separation s;
-            s.other = other;
-            s.x = sep.x;
-            const double ro = max_of(radii[other]);
-            s.reach = model.disks ? std::max(0.0, sep.x - 3.0) * r_max + ro : sep.x * r_max;
-            if (min_of(radii[c]) <= 0.0 && min_of(radii[other]) <= 0.0) s.reach = std::max(s.reach, sep.x * r_max);
-            s.reach *= 1.0 + 1e-9;
-            separations[c].push_back(s);
-        };
-        add(sep.a, sep.b);
-        add(sep.b, sep.a);
+        add(sep.a, sep.b, sep.x);
+        add(sep.b, sep.a, sep.x);
     }
+    // A class with few elements keeps its closest approach to every class, both ways.
+    for (const PcfSparseClass& sc : model.sparse)
+        for (int o = 0; o < classes; ++o) {
+            if (o == sc.cls || !(sc.closest[o] > 0.0)) continue;
+            add(sc.cls, o, sc.closest[o]);
+            add(o, sc.cls, sc.closest[o]);
+        }
 
     // The grid: cells of a quarter of the largest query radius (a query visits about 1.6
     // times the area of its disc), coarser if there would be too many.
@@ -260,9 +272,10 @@ void State::remove(int i) {
     add_pairs(i, -1.0);
 }
 
-State::Snapshot State::snapshot(int c) const {
+State::Snapshot State::snapshot(int c, const std::vector<int>& elements) const {
     Snapshot snap;
-    for (int i : members[c]) {
+    snap.elements = elements;
+    for (int i : elements) {
         snap.positions.push_back(elems[i].p);
         snap.profiles.push_back(profiles[i]);
     }
@@ -271,8 +284,8 @@ State::Snapshot State::snapshot(int c) const {
 }
 
 void State::restore(int c, const Snapshot& snap) {
-    for (size_t k = 0; k < members[c].size(); ++k) {
-        const int i = members[c][k];
+    for (size_t k = 0; k < snap.elements.size(); ++k) {
+        const int i = snap.elements[k];
         elems[i].p = snap.positions[k];
         profiles[i] = snap.profiles[k];
     }
@@ -281,6 +294,22 @@ void State::restore(int c, const Snapshot& snap) {
         refresh(class_terms[c][k]);
     }
     rebuild_grid(c);
+}
+
+std::vector<int> State::near_members(int c, const std::vector<int>& around, double radius) const {
+    std::vector<char> in(elems.size(), 0);
+    for (int a : around) {
+        in[a] = 1;
+        if (elems[a].placed)
+            for_each_near(c, elems[a].p, radius, [&](int j) {
+                in[j] = 1;
+                return true;
+            });
+    }
+    std::vector<int> out;
+    for (int i : members[c])
+        if (in[i]) out.push_back(i);
+    return out;
 }
 
 void State::rebuild_grid(int c) {

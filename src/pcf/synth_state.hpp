@@ -208,14 +208,20 @@ public:
     void insert(int i, CircleProfile& profile);
     // Takes a placed element out again.
     void remove(int i);
-    // A class's positions, profiles and PCF sums, to undo changes to it.
+    // Some elements' positions and profiles and their class's PCF sums, to undo changes
+    // to those elements (a copy of the elements moved, not of the whole class: a local
+    // refinement must not cost the class's size per sweep).
     struct Snapshot {
+        std::vector<int> elements;
         std::vector<Vec3> positions;
         std::vector<CircleProfile> profiles;
         std::vector<std::vector<double>> sums;
     };
-    Snapshot snapshot(int c) const;
+    Snapshot snapshot(int c, const std::vector<int>& elements) const;
     void restore(int c, const Snapshot& snap);
+    // The placed elements of class c within `radius` of a placed element of `around`
+    // (those included), in members order.
+    std::vector<int> near_members(int c, const std::vector<int>& around, double radius) const;
     // Rebuilds class c's grid entries from the current positions (element order).
     void rebuild_grid(int c);
     // Refreshes a term's base_max after its sum changed.

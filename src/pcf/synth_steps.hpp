@@ -54,10 +54,25 @@ struct InitReport {
 InitReport initialise(State& s, int c, const std::vector<int>& elements, const InitSettings& settings,
                       const std::function<void()>& tick);
 
+struct SparseReport {
+    int by_bound = 0;    // elements placed at the best of the bounded darts, breaking a rule
+    double worst = 0.0;  // the largest violation (normalised axis) among them
+};
+
+// Places `elements` (unplaced, of the sparse class sc.cls) by the fallback of
+// PcfSparseClass: keyed darts, the first that keeps every rule (a bounded number; then
+// the one that broke them least). `tick` is called on the calling thread now and then.
+SparseReport place_sparse(State& s, const PcfSparseClass& sc, const std::vector<int>& elements, std::uint64_t seed,
+                          const std::function<void()>& tick);
+
 struct RefineReport {
     int sweeps = 0;
     bool converged = false;
 };
+
+// The neighbourhood of a re-placed element of class c that a local refinement moves
+// with it: two r_max beyond contact (the first rings of neighbours).
+double local_reach(const State& s, int c);
 
 // Refinement of `elements` (placed, of class c) by Eq. 4 to 6 against the class's PCFs,
 // at most max_iterations sweeps; on_sweep(energy) after each one.

@@ -12,6 +12,7 @@
 #include "core/parallel.hpp"
 #include "core/run_clock.hpp"
 #include "core/rng.hpp"
+#include "pcf/sparse_classes.hpp"
 #include "pcf/synth_steps.hpp"
 #include "tessera/error.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -28,10 +29,16 @@ using core::seconds_since;
 // envelope term of Eq. 11: relative to the bound) makes it an outlier (section 6.4):
 // above its upper envelope by 90% of the envelope, or below 10% of its lower envelope.
 constexpr double kOutlierTolerance = 0.9;
-// At most this share of a class is re-placed per outlier round (the worst first).
+// At most this share of a class, and at most kOutlierMax elements, are re-placed per
+// outlier round (the worst first). The re-placement of a complete class ends in grid
+// search (every dart fails), 64 x 64 candidates per element: the count bound keeps a
+// round's cost independent of the class's size.
 constexpr double kOutlierShare = 0.1;
+constexpr size_t kOutlierMax = 16;
 // An outlier round may raise the class's PCF error (sum of squares) by this much.
 constexpr double kOutlierSlack = 0.1;
+// Initialisation reports progress this often (seconds of work) at most.
+constexpr double kTickSeconds = 0.25;
 
 [[noreturn]] void bad_option(const std::string& message) { throw Error(ErrorKind::option, message); }
 
@@ -93,6 +100,14 @@ void check_model(const PcfModel& m) {
             if (!std::isfinite(e.mean[k]) || !std::isfinite(e.lower[k]) || !std::isfinite(e.upper[k]))
                 bad_model("the PCF of " + m.classes[e.parent] + " -> " + m.classes[e.child] + " has a value that is not finite");
     }
+    for (const PcfSparseClass& sc : m.sparse)
+        if (sc.cls < 0 || sc.cls >= classes || static_cast<int>(sc.closest.size()) != classes ||
+            static_cast<int>(sc.tether.size()) != classes || !(std::isfinite(sc.spacing) && sc.spacing >= 0.0))
+            bad_model("a sparse class needs a class, a spacing >= 0 and one closest approach and tether per class");
+    for (int c = 0; c < classes; ++c)
+        if (m.counts[c] < kPcfSparseCount && !pcf::sparse_class(m, c))
+            bad_model("class '" + m.classes[c] + "' has " + std::to_string(m.counts[c]) +
+                      " elements and no entry in the sparse classes");
     for (const PcfSeparation& sep : m.separations)
         if (sep.a < 0 || sep.a >= classes || sep.b < 0 || sep.b >= classes || sep.a == sep.b ||
             !(std::isfinite(sep.x) && sep.x >= 0.0))
@@ -124,6 +139,21 @@ std::string format(double v) {
     std::ostringstream s;
     s << v;
     return s.str();
+}
+
+// What the fallback for a class with few elements did, for the notes.
+std::string sparse_note(const PcfModel& m, const PcfSparseClass& sc, int placed) {
+    const int n = m.counts[sc.cls];
+    std::string note = "class '" + m.classes[sc.cls] + "' has " + std::to_string(n) + (n == 1 ? " element" : " elements") +
+                       " in the exemplar, too few for PCFs: its " + std::to_string(placed) +
+                       " elements were placed at random (same density) at least " + format(sc.spacing) +
+                       " apart, no closer to any class than in the exemplar";
+    std::string tethers;
+    for (size_t o = 0; o < sc.tether.size(); ++o)
+        if (sc.tether[o] > 0.0)
+            tethers += (tethers.empty() ? "" : ", ") + ("'" + m.classes[o] + "'") + " within x = " + format(sc.tether[o]);
+    if (!tethers.empty()) note += ", each with a " + tethers;
+    return note + " (its PCFs and its children's PCFs on it were not used)";
 }
 
 }  // namespace
@@ -175,7 +205,13 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     int sweep_index = 0;
     double init_seconds = 0.0;
     auto sweep_start = Clock::now();
-    const auto tick = [&] { report(progress, {"init", -1, planned, 0.0, seconds_since(t0)}); };
+    // Placements report at most every kTickSeconds (a grid search takes up to ~50 ms).
+    auto last_tick = Clock::now();
+    const auto tick = [&] {
+        if (seconds_since(last_tick) < kTickSeconds) return;
+        last_tick = Clock::now();
+        report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
+    };
     const auto on_sweep = [&](double energy) {
         stats.energy.push_back(energy);
         stats.iteration_seconds.push_back(seconds_since(sweep_start));
@@ -198,6 +234,19 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             stats.notes.push_back("no grid cell was inside the domain: " + std::to_string(r.by_fallback) +
                                   " elements of " + name + when + " were placed at random points");
     };
+    // A class with too few elements for PCFs: the fallback of PcfSparseClass.
+    const auto run_sparse = [&](const PcfSparseClass& sc, const std::vector<int>& elements) {
+        const auto ti = Clock::now();
+        const pcf::SparseReport r = pcf::place_sparse(state, sc, elements, options.seed, tick);
+        init_seconds += seconds_since(ti);
+        stats.notes.push_back(sparse_note(model, sc, static_cast<int>(elements.size())));
+        if (r.by_bound > 0) {
+            ++stats.solver_bound_hits;
+            stats.notes.push_back("class '" + model.classes[sc.cls] + "': " + std::to_string(r.by_bound) +
+                                  " elements placed at the best of their darts (bound reached), up to " +
+                                  format(r.worst) + " r_max inside the fallback's distances");
+        }
+    };
     // Returns 1 when the refinement stopped at its sweep bound, not by convergence.
     const auto run_refine = [&](int c, const std::vector<int>& elements, int sweeps) {
         sweep_start = Clock::now();
@@ -208,6 +257,10 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     for (int c : model.order) {
         report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
         const std::vector<int>& members = state.members[c];
+        if (const PcfSparseClass* sparse = pcf::sparse_class(model, c)) {
+            run_sparse(*sparse, members);
+            continue;
+        }
         run_init(c, members, 0);
         stats.solver_bound_hits += run_refine(c, members, options.max_iterations);
         // Section 6.4: re-place the elements whose individual PCFs left the validity
@@ -231,22 +284,38 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             if (outliers.empty()) break;
             std::stable_sort(outliers.begin(), outliers.end(),
                              [&](int a, int b) { return violation[a] > violation[b]; });
-            const size_t cap = static_cast<size_t>(std::max(1.0, std::floor(kOutlierShare * members.size())));
-            if (outliers.size() > cap) outliers.resize(cap);
+            const size_t found = outliers.size();
+            const size_t share = static_cast<size_t>(std::max(1.0, std::floor(kOutlierShare * members.size())));
+            outliers.resize(std::min({found, share, kOutlierMax}));
             std::vector<int> elements;
             for (int k : outliers) elements.push_back(members[k]);
             std::sort(elements.begin(), elements.end());  // members are largest radius first
 
+            // Only the re-placed elements and the class's elements near where they were or
+            // now are take part (section 6.4 refines the class; refining its far parts
+            // again costs the class's size per sweep and moves little).
+            const double reach = pcf::local_reach(state, c);
+            std::vector<int> local = state.near_members(c, elements, reach);
             const double before = class_error();
-            const pcf::State::Snapshot snap = state.snapshot(c);
+            const pcf::State::Snapshot snap = state.snapshot(c, local);
             for (int i : elements) state.remove(i);
             run_init(c, elements, round);
-            const int bound_hit = run_refine(c, members, outlier_sweeps);
+            std::vector<int> moved = state.near_members(c, elements, reach);
+            moved.insert(moved.end(), local.begin(), local.end());
+            std::sort(moved.begin(), moved.end());
+            moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+            local = std::move(moved);
+            const pcf::State::Snapshot wider = state.snapshot(c, local);  // the new neighbours too
+            const int bound_hit = run_refine(c, local, outlier_sweeps);
             const double after = class_error();
-            const std::string what = "outlier round " + std::to_string(round) + " of class '" + model.classes[c] +
-                                     "': " + std::to_string(elements.size()) + " of " +
-                                     std::to_string(members.size()) + " elements re-placed";
+            std::string what = "outlier round " + std::to_string(round) + " of class '" + model.classes[c] + "': " +
+                               std::to_string(elements.size()) + " of " + std::to_string(members.size()) +
+                               " elements re-placed";
+            if (found > elements.size())
+                what += " (" + std::to_string(found) + " outliers; at most " + std::to_string(kOutlierMax) +
+                        " and 10% of the class per round)";
             if (after > before * (1.0 + kOutlierSlack)) {
+                state.restore(c, wider);  // the refinement's moves, then the re-placement
                 state.restore(c, snap);
                 stats.notes.push_back(what + ", undone (its PCF error rose from " + format(before) + " to " +
                                       format(after) + ")");
@@ -275,8 +344,9 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             const int index = out.add_element(c, {e.p}, e.r);
             out.elements[index].id = static_cast<std::uint64_t>(index);
         }
-    double final_energy = 0.0;
-    for (int t = 0; t < static_cast<int>(state.terms.size()); ++t) final_energy += state.term_error(t);
+    double final_energy = 0.0;  // of the PCFs synthesis used (not those of the sparse classes)
+    for (const std::vector<int>& ts : state.class_terms)
+        for (int t : ts) final_energy += state.term_error(t);
     stats.final_energy = final_energy;
     stats.total_seconds = seconds_since(t0);
     report(progress, {"done", sweep_index, planned, final_energy, stats.total_seconds});

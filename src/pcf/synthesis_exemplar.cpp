@@ -1,13 +1,27 @@
 // synthesize_pcf from an exemplar: analyze_distribution + synthesis of the model, with
-// the exemplar's element types (meshes, flags) carried over to the output by name.
+// the exemplar's element types (meshes, flags) carried over to the output by name, then
+// the crowding repair against the exemplar's close-distance tails (synth_repair.hpp).
+#include "core/run_clock.hpp"
+#include "pcf/synth_repair.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace tessera {
 
 Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const PcfSynthOptions& options,
                            const Progress& progress) {
+    const auto t0 = core::Clock::now();
+    core::report(progress, {"analysis", -1, 0, 0.0, 0.0});
     const PcfModel model = analyze_distribution(exemplar, options.analysis);
-    Arrangement out = synthesize_pcf(model, domain, options, progress);
+    // The model's synthesis reports its stages; its "done" waits for the repair.
+    ProgressEvent done;
+    const Progress inner = [&](const ProgressEvent& e) {
+        if (e.stage == "done") {
+            done = e;
+            return true;
+        }
+        return !progress || progress(e);
+    };
+    Arrangement out = synthesize_pcf(model, domain, options, progress ? inner : Progress{});
     for (ElementType& type : out.types) {
         const int t = exemplar.find_type(type.name);
         if (t < 0) continue;
@@ -15,6 +29,11 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
         type = exemplar.types[t];
         type.depends_on = depends_on;
     }
+    core::report(progress, {"repair", -1, 0, 0.0, core::seconds_since(t0)});
+    pcf::repair_output(exemplar, domain, options, out);
+    out.stats.total_seconds = core::seconds_since(t0);
+    done.elapsed_s = out.stats.total_seconds;
+    core::report(progress, done);
     return out;
 }
 

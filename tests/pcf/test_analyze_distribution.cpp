@@ -281,11 +281,20 @@ TEST(PcfAnalysis, UnknownDependencyIsAnError) {
     EXPECT_NE(e.find("'rock'"), std::string::npos) << e;
 }
 
-TEST(PcfAnalysis, ClassWithOneElementIsAnError) {
-    const std::string e = error_of(test::three_classes({}, {5, 1, 4}));
+TEST(PcfAnalysis, ClassWithOneElementIsSparse) {
+    const PcfModel m = analyze_distribution(test::three_classes({}, {5, 1, 4}));
+    ASSERT_EQ(m.sparse.size(), 1u);
+    EXPECT_EQ(m.sparse[0].cls, 1);
+    EXPECT_EQ(m.counts[1], 1);
+    EXPECT_GT(m.sparse[0].spacing, 0.0);
+    EXPECT_GT(m.sparse[0].tether[0], 0.0);  // b depends on a
+    EXPECT_EQ(m.sparse[0].tether[2], 0.0);  // c depends on b, not b on c
+}
+
+TEST(PcfAnalysis, ClassWithoutElementsIsAnError) {
+    const std::string e = error_of(test::three_classes({}, {5, 0, 4}));
     EXPECT_NE(e.find("input"), std::string::npos) << e;
-    EXPECT_NE(e.find("'b'"), std::string::npos) << e;
-    EXPECT_NE(e.find("1 element"), std::string::npos) << e;
+    EXPECT_NE(e.find("'b' has no elements"), std::string::npos) << e;
 }
 
 TEST(PcfAnalysis, InputErrors) {

@@ -190,7 +190,9 @@ TEST_F(PcfAnalyzeCli, ErrorsAreOneLineAndWriteNothing) {
         "types": [{"name": "tree", "depends_on": ["grass"]}, {"name": "grass", "depends_on": ["tree"]}],
         "elements": [{"type": "tree", "position": [1, 1]}, {"type": "tree", "position": [5, 5]},
                      {"type": "grass", "position": [2, 1]}, {"type": "grass", "position": [7, 3]}]})");
-    write("lonely.csv", "x,y,class\n1,1,a\n2,2,a\n3,1,b\n");
+    write("lonely.json", R"({"format": "tessera", "version": 1, "dimension": 2,
+        "domain": {"type": "box", "min": [0, 0], "max": [10, 10]}, "types": [{"name": "a"}, {"name": "b"}],
+        "elements": [{"type": "a", "position": [1, 1]}, {"type": "a", "position": [5, 5]}]})");
     write("unknown.json", R"({"format": "tessera", "version": 1, "dimension": 2,
         "domain": {"type": "box", "min": [0, 0], "max": [10, 10]},
         "types": [{"name": "tree", "depends_on": ["rock"]}],
@@ -211,7 +213,7 @@ TEST_F(PcfAnalyzeCli, ErrorsAreOneLineAndWriteNothing) {
         {"'" + points_dir + "cells.csv' --bandwidth 0.1 -o " + q("m.json"), 2, {"--bandwidth", "--standard-pcf"}},
         {q("cycle.json") + " -o " + q("m.json"), 3, {"cycle", "'tree'", "'grass'"}},
         {q("unknown.json") + " -o " + q("m.json"), 3, {"unknown.json", "'tree'", "'rock'"}},
-        {q("lonely.csv") + " -o " + q("m.json"), 3, {"'b'", "1 element"}},
+        {q("lonely.json") + " -o " + q("m.json"), 3, {"'b'", "no elements"}},
         {two + " --plot " + q("p.jpg"), 2, {"--plot", ".jpg"}},
         {two + " -o " + q("m.txt"), 2, {"-o", ".txt"}},
         {two + " -o " + q("no/such/m.json"), 5, {"no/such"}},

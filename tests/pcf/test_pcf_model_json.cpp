@@ -82,11 +82,17 @@ TEST(PcfModelJson, VersionOneHasNoSeparations) {
     const std::string text = edited([](nlohmann::json& j) {
         j["version"] = 1;
         j.erase("separations");
+        j.erase("sparse");
     });
     const PcfModel m = pcf_model_from_json(text, "old.json");
     EXPECT_TRUE(m.separations.empty());
     EXPECT_EQ(m.pcfs.size(), sample_model().pcfs.size());
-    EXPECT_NE(error_of(edited([](nlohmann::json& j) { j["version"] = 1; })).find("unknown key 'separations'"),
+    EXPECT_NE(error_of(edited([](nlohmann::json& j) {
+                  j["version"] = 1;
+                  j.erase("sparse");
+              })).find("unknown key 'separations'"),
+              std::string::npos);
+    EXPECT_NE(error_of(edited([](nlohmann::json& j) { j["version"] = 2; })).find("unknown key 'sparse'"),
               std::string::npos);
 }
 
@@ -105,7 +111,7 @@ TEST(PcfModelJson, StrictReading) {
     } cases[] = {
         {[](nlohmann::json& j) { j["colour"] = 1; }, {"unknown key 'colour'"}},
         {[](nlohmann::json& j) { j.erase("r_max"); }, {"missing \"r_max\""}},
-        {[](nlohmann::json& j) { j["version"] = 3; }, {"version", "3"}},
+        {[](nlohmann::json& j) { j["version"] = 4; }, {"version", "4"}},
         {[](nlohmann::json& j) { j.erase("separations"); }, {"missing \"separations\""}},
         {[](nlohmann::json& j) { j["separations"] = nlohmann::json::array(); }, {"separations", "missing the pair 'b', 'c'"}},
         {[](nlohmann::json& j) { j["separations"][0]["x"] = -1; }, {"separations[0].x", ">= 0"}},
@@ -115,7 +121,7 @@ TEST(PcfModelJson, StrictReading) {
         {[](nlohmann::json& j) { j["format"] = "tessera"; }, {"format"}},
         {[](nlohmann::json& j) { j["settings"]["sigma"] = 0; }, {"settings.sigma"}},
         {[](nlohmann::json& j) { j["r_max"] = -1; }, {"r_max", "> 0"}},
-        {[](nlohmann::json& j) { j["classes"][1]["count"] = 1; }, {"classes[1].count"}},
+        {[](nlohmann::json& j) { j["classes"][1]["count"] = 0; }, {"classes[1].count"}},
         {[](nlohmann::json& j) { j["classes"][0]["radii"].erase(0); }, {"classes[0].radii"}},
         {[](nlohmann::json& j) { j["classes"][1]["depends_on"] = {"rock"}; }, {"classes", "'rock'", "'b'"}},
         {[](nlohmann::json& j) { j["classes"][2]["depends_on"] = {"a"}; }, {"cycle", "'a'", "'c'"}},
