@@ -59,9 +59,9 @@ void StatusPrinter::show(const tessera::ProgressEvent& event, const std::string&
         print_held_locked();
         return;
     }
-    // The last iteration's line (its final energy) is always shown: held, it is printed
-    // before a later stage's line replaces it.
-    if (held_ && held_last_iteration_ && event.stage != "iteration") print_held_locked();
+    // The last line of a run of iterations (its final energy) is always shown: held, it is
+    // printed before another stage's line replaces it (the one exception to the rate).
+    if (held_ && held_iteration_ && event.stage != "iteration") print_held_locked();
     const auto now = Clock::now();
     if (!last_line_ || now - *last_line_ >= std::chrono::duration<double>(timing_.min_interval)) {
         held_.reset();
@@ -69,7 +69,7 @@ void StatusPrinter::show(const tessera::ProgressEvent& event, const std::string&
         return;
     }
     held_ = line;
-    held_last_iteration_ = event.stage == "iteration" && event.iteration + 1 >= event.iterations;
+    held_iteration_ = event.stage == "iteration";
     lock.unlock();
     wake_.notify_all();
 }

@@ -82,7 +82,7 @@ private:
     bool stop_ = false;
     std::optional<Clock::time_point> last_line_;
     std::optional<std::string> held_;  // the latest event not printed yet, as its line
-    bool held_last_iteration_ = false; // that event is the last iteration
+    bool held_iteration_ = false;      // that event is an iteration (or a sweep)
     std::optional<std::string> step_;  // the step of the command's own under way
     Clock::time_point step_start_;
     bool step_announced_ = false;
