@@ -125,4 +125,18 @@ EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<
     }
 }
 
+std::vector<Vec3> lattice_inside(const Domain& domain, int dim, double step) {
+    const Box box = domain.bounds();
+    int n[3] = {1, 1, 1};
+    for (int k = 0; k < dim; ++k) n[k] = std::max(1, static_cast<int>(std::floor(box.size()[k] / step)));
+    std::vector<Vec3> points;
+    for (int z = 0; z < n[2]; ++z)
+        for (int y = 0; y < n[1]; ++y)
+            for (int x = 0; x < n[0]; ++x) {
+                const Vec3 p = box.lo + Vec3{(x + 0.5) * step, (y + 0.5) * step, dim == 3 ? (z + 0.5) * step : 0.0};
+                if (domain.inside(p)) points.push_back(p);
+            }
+    return points;
+}
+
 }  // namespace tessera::core

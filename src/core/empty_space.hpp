@@ -63,4 +63,29 @@ struct EmptyBall {
 EmptyBall largest_empty_ball(const std::vector<Vec3>& points, const std::vector<double>& rims, const Domain& domain,
                              int dimension, double step, int threads);
 
+// The points of a lattice of `step` (cell centres over the domain's bounds) inside the domain.
+std::vector<Vec3> lattice_inside(const Domain& domain, int dimension, double step);
+
+// The centre of the hole around lattice point p: a pattern search (steps from half the
+// lattice step down to a 32nd of it) for the largest clearance(q); `depth` is set to it.
+template <class Clearance>
+Vec3 hole_centre(const Vec3& p, int dims, double step, const Clearance& clearance, double& depth) {
+    Vec3 best = p;
+    depth = clearance(p);
+    for (double h = 0.5 * step; h > step / 32.0; h *= 0.5) {
+        bool moved = true;
+        for (int guard = 0; moved && guard < 16; ++guard) {
+            moved = false;
+            for (int k = 0; k < dims; ++k)
+                for (double sign : {-1.0, 1.0}) {
+                    Vec3 q = best;
+                    q[k] += sign * h;
+                    const double d = clearance(q);
+                    if (d > depth) depth = d, best = q, moved = true;
+                }
+        }
+    }
+    return best;
+}
+
 }  // namespace tessera::core

@@ -23,46 +23,10 @@ constexpr int kCopiesTried = 8;
 double vacancy_step(int dim, double spacing) { return spacing / (dim == 2 ? 4.0 : 3.0); }
 
 std::vector<Vec3> vacancy_candidates(const Domain& domain, int dim, double spacing) {
-    return lattice_inside(domain, dim, vacancy_step(dim, spacing));
-}
-
-std::vector<Vec3> lattice_inside(const Domain& domain, int dim, double step) {
-    const Box box = domain.bounds();
-    int n[3] = {1, 1, 1};
-    for (int k = 0; k < dim; ++k) n[k] = std::max(1, static_cast<int>(std::floor(box.size()[k] / step)));
-    std::vector<Vec3> points;
-    for (int z = 0; z < n[2]; ++z)
-        for (int y = 0; y < n[1]; ++y)
-            for (int x = 0; x < n[0]; ++x) {
-                const Vec3 p = box.lo + Vec3{(x + 0.5) * step, (y + 0.5) * step, dim == 3 ? (z + 0.5) * step : 0.0};
-                if (domain.inside(p)) points.push_back(p);
-            }
-    return points;
+    return core::lattice_inside(domain, dim, vacancy_step(dim, spacing));
 }
 
 namespace {
-
-// The centre of the hole around lattice point p: a pattern search (steps from half the
-// lattice step down to a 32nd of it) for the largest clearance; `depth` is set to it.
-template <class Clearance>
-Vec3 hole_centre(const Vec3& p, int dims, double step, const Clearance& clearance, double& depth) {
-    Vec3 best = p;
-    depth = clearance(p);
-    for (double h = 0.5 * step; h > step / 32.0; h *= 0.5) {
-        bool moved = true;
-        for (int guard = 0; moved && guard < 16; ++guard) {
-            moved = false;
-            for (int k = 0; k < dims; ++k)
-                for (double sign : {-1.0, 1.0}) {
-                    Vec3 q = best;
-                    q[k] += sign * h;
-                    const double d = clearance(q);
-                    if (d > depth) depth = d, best = q, moved = true;
-                }
-        }
-    }
-    return best;
-}
 
 // The type to put into a hole at c: of the types whose hard core holds against the
 // elements around c, the one furthest below its count (relative to it); when none holds,
@@ -142,7 +106,7 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
     const double step = count_fill ? vacancy_step(dim, spacing)
                                    : std::max(vacancy_step(dim, spacing), 0.5 * settings.hole_radius / std::sqrt(double(dim)));
     const double lattice_slack = 0.5 * step * std::sqrt(static_cast<double>(dim));
-    const std::vector<Vec3> candidates = lattice_inside(domain, dim, step);
+    const std::vector<Vec3> candidates = core::lattice_inside(domain, dim, step);
     // Holes wider than `cap` rank equal. Filling holes only, the heap needs no lattice point
     // that cannot lie in one (the hole's centre is within lattice_slack of some point).
     const double cap = count_fill ? 2.0 * spacing : settings.hole_radius + 2.0 * lattice_slack;
@@ -178,7 +142,7 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
         const bool maybe_hole = settings.hole_radius > 0.0 && fresh + lattice_slack > settings.hole_radius;
         if (!maybe_hole && !short_of_count) break;  // the largest remaining hole needs nothing
         double depth = fresh;
-        const Vec3 c = maybe_hole ? hole_centre(candidates[-negative], dim, step, clearance, depth) : candidates[-negative];
+        const Vec3 c = maybe_hole ? core::hole_centre(candidates[-negative], dim, step, clearance, depth) : candidates[-negative];
         const bool hole = maybe_hole && depth > settings.hole_radius;
         if (!hole && !short_of_count) continue;
         if (report.added >= bound) {

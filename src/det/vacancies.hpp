@@ -42,8 +42,6 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
 
 // The candidate centres of holes: a lattice of a quarter spacing (a third in 3D) inside the domain.
 std::vector<Vec3> vacancy_candidates(const Domain& domain, int dimension, double spacing);
-// The points of a lattice of `step` (cell centres over the domain's bounds) inside the domain.
-std::vector<Vec3> lattice_inside(const Domain& domain, int dimension, double step);
 
 // The largest empty ball of the exemplar in its own window (rim to rim): the size of hole
 // the exemplar itself shows, against which output holes are judged. A layered exemplar
