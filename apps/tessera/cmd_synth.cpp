@@ -83,7 +83,7 @@ struct SynthArgs {
 // The flags that belong to one method only.
 const std::vector<std::string> det_only_flags = {
     "--radius", "--k",       "--search",           "--matching", "--alpha",   "--lambda",        "--patch-size",
-    "--patch-candidates", "--relax-sweeps", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field",
+    "--patch-candidates", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field",
     "--boundary", "--boundary-distance"};
 const std::vector<std::string> pcf_only_flags = {"--max-fails",      "--grid-cells", "--epsilon0",
                                                  "--epsilon-step",   "--convergence", "--outlier-rounds",
@@ -127,6 +127,7 @@ void check_options(SynthArgs& args) {
     p.seed = d.seed;
     p.threads = d.threads;
     if (args.command->count("--iterations") > 0) p.max_iterations = d.iterations;
+    p.relax_sweeps = d.relax_sweeps;
     const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
     const auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
     if (p.max_fails < 0) fail_option("--max-fails must be >= 0, got " + std::to_string(p.max_fails));
@@ -316,8 +317,9 @@ Subcommand add_synth_command(CLI::App& app) {
     add_integer_option(*cmd, "--patch-candidates", args->det.patch_candidates,
                     "Random candidate patches tried per cell at initialization (>= 1).");
     add_integer_option(*cmd, "--relax-sweeps", args->det.relax_sweeps,
-                       "det, single-sample elements: sweeps of the pair-correlation relaxation after the "
-                       "iterations (small moves towards the exemplar's pair correlation; 0 = off, at most 1000).");
+                       "Sweeps of the pair-correlation relaxation at the end (det: exemplars of single-sample "
+                       "elements; pcf: synthesis from an exemplar): small moves towards the exemplar's pair "
+                       "correlation of every class pair; 0 = off, at most 1000.");
     cmd->add_flag("--physics", args->det.physics,
                   "Interleaved physics: after every iteration, rigid-body steps (Bullet) resolve "
                   "interpenetration and let elements settle under gravity; reports interpenetration and "

@@ -146,6 +146,9 @@ struct PcfSynthOptions {
     // Re-initialise elements whose individual PCF leaves the validity region after
     // refinement (section 6.4), at most this many rounds.
     int outlier_rounds = 2;
+    // Synthesis from an exemplar: sweeps of the final pair-correlation relaxation (every
+    // class pair's g(r) towards the exemplar's, docs/pcf_synthesis.md); 0 = off, <= 1000.
+    int relax_sweeps = 4;
 };
 
 // Synthesizes the model's distribution in `domain` (2D: box or polygon, any size): element

@@ -77,6 +77,7 @@ void apply_pcf(tessera::PcfSynthOptions& o, const std::string& key, const py::ha
     if (key == "seed") o.seed = get<std::uint64_t>(v, key, "an unsigned 64-bit integer");
     else if (key == "threads") o.threads = integer(v, key);
     else if (key == "iterations") o.max_iterations = integer(v, key);
+    else if (key == "relax_sweeps") o.relax_sweeps = integer(v, key);
     else if (key == "max_fails") o.max_fails = integer(v, key);
     else if (key == "grid_cells") o.grid_cells = integer(v, key);
     else if (key == "epsilon0") o.epsilon0 = number(v, key);
@@ -195,6 +196,7 @@ void bind_synthesize(py::module_& m) {
         det["physics"] = d.physics, det["physics_substeps"] = d.physics_options.substeps;
         det["floor_distance"] = d.floor_distance, det["boundary_distance"] = d.boundary_distance;
         pcf["seed"] = p.seed, pcf["threads"] = p.threads, pcf["iterations"] = p.max_iterations;
+        pcf["relax_sweeps"] = p.relax_sweeps;
         pcf["max_fails"] = p.max_fails, pcf["grid_cells"] = p.grid_cells, pcf["epsilon0"] = p.epsilon0;
         pcf["epsilon_step"] = p.epsilon_step, pcf["convergence"] = p.convergence;
         pcf["outlier_rounds"] = p.outlier_rounds, pcf["sigma"] = p.analysis.sigma, pcf["step"] = p.analysis.step;

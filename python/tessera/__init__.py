@@ -37,7 +37,6 @@ __all__ = [
 
 _DEFAULTS = _tessera.default_options()
 _DET_ONLY = ("radius", "k", "search", "matching", "alpha", "lambda_", "patch_size", "patch_candidates",
-             "relax_sweeps",
              "physics", "physics_substeps", "gravity", "floor_distance", "boundary", "boundary_distance",
              "field")
 _PCF_ONLY = ("max_fails", "grid_cells", "epsilon0", "epsilon_step", "convergence", "outlier_rounds",
@@ -132,6 +131,8 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
               output whatever `threads` is (0 = all hardware threads).
     iterations det: search + assignment iterations (default 10); pcf: at most this many
               refinement sweeps per class (default 100).
+    relax_sweeps  sweeps of the final pair-correlation relaxation (default 4, 0 = off; det:
+              exemplars of single-sample elements; pcf: synthesis from an exemplar).
     progress  optional callable, called with a dict (stage, iteration, iterations, energy,
               elapsed) for every event of the run: its set-up stages ("init", and others a
               method may add, e.g. "index") with their fraction done iteration / iterations
@@ -142,7 +143,7 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
     det options (docs/cli.md and `tessera synth --help` give the details):
       radius (0 = automatic), k, search ("kcoherence" | "exhaustive"), matching ("greedy" |
       "hungarian"), alpha and lambda_ (negative = automatic), patch_size (0 = automatic),
-      patch_candidates, relax_sweeps (0 = no pair-correlation relaxation), physics,
+      patch_candidates, physics,
       physics_substeps, gravity ("-z", or a vector), floor_distance,
       boundary ("-x,+x" or ["-x", "+x"]) with boundary_distance, field (the --field forms,
       e.g. "vortex:5,5" or "grid:FILE.json").
@@ -169,7 +170,7 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
         if given[name] != defaults.get(name, None):
             raise OptionError("%s applies to method=%r only" % (name, "pcf" if method == "det" else "det"))
     options = {name: given[name] for name in mine}
-    options.update(seed=seed, threads=threads)
+    options.update(seed=seed, threads=threads, relax_sweeps=relax_sweeps)
     if iterations is not None:
         options["iterations"] = iterations
     if progress is not None and not callable(progress):

@@ -53,6 +53,8 @@ void check_options(const PcfSynthOptions& o) {
     if (o.max_iterations < 0) bad_option("max_iterations must be >= 0, got " + std::to_string(o.max_iterations));
     if (!finite_at_least(o.convergence, 0.0)) bad_option("convergence must be a finite number >= 0");
     if (o.outlier_rounds < 0) bad_option("outlier_rounds must be >= 0, got " + std::to_string(o.outlier_rounds));
+    if (o.relax_sweeps < 0 || o.relax_sweeps > 1000)
+        bad_option("relax_sweeps must be from 0 to 1000, got " + std::to_string(o.relax_sweeps));
 }
 
 [[noreturn]] void bad_model(const std::string& message) { throw Error(ErrorKind::input, "PCF model: " + message); }

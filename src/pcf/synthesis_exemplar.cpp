@@ -3,6 +3,7 @@
 // the crowding repair against the exemplar's close-distance tails (synth_repair.hpp).
 #include "core/run_clock.hpp"
 #include "pcf/synth_holes.hpp"
+#include "pcf/synth_relax.hpp"
 #include "pcf/synth_repair.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -31,6 +32,7 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
         type.depends_on = depends_on;
     }
     core::report(progress, {"repair", -1, 0, 0.0, core::seconds_since(t0)});
+    pcf::relax_output(exemplar, domain, options, out);
     pcf::close_holes(exemplar, domain, options, out);
     pcf::repair_output(exemplar, domain, options, out);
     out.stats.total_seconds = core::seconds_since(t0);
