@@ -8,40 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "metrics/field_data.hpp"
+#include "quality_data.hpp"
 #include "test_meshes.hpp"
 #include "tessera/tessera.hpp"
 
 using namespace tessera;
+using test::example;
+using test::field_pattern;
+using test::tiled;
 
 namespace {
-
-Exemplar field_pattern(const std::string& name) {
-    const test::CsvTable w = test::read_csv(test::shared_data_dir() + "/points/windows.csv");
-    for (size_t r = 0; r < w.rows.size(); ++r)
-        if (w.rows[r][w.column("name")] == name) {
-            LoadOptions lo;
-            lo.input_domain = Domain::box({w.number(r, 1), w.number(r, 2), 0}, {w.number(r, 3), w.number(r, 4), 0}, 2);
-            return load(test::shared_data_dir() + "/points/" + name + ".csv", lo);
-        }
-    throw std::runtime_error("no window for " + name);
-}
-
-Exemplar example(const std::string& name) { return load(std::string(TESSERA_SOURCE_DIR) + "/examples/" + name + ".json"); }
-
-// The exemplar's elements at 2 x 2 translates of its window: what a verbatim copy scores.
-Exemplar tiled(const Exemplar& ex) {
-    Exemplar out;
-    out.dimension = 2;
-    out.types = ex.types;
-    const Box b = ex.domain.bounds();
-    const Vec3 size = b.size();
-    out.domain = Domain::box(b.lo, b.lo + Vec3{2 * size.x, 2 * size.y, 0}, 2);
-    for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j)
-            for (const Element& e : ex.elements) out.add_element(e.type, {e.position + Vec3{i * size.x, j * size.y, 0}}, e.radius);
-    return out;
-}
 
 // Every class pair: crowded share within 1.5x of the exemplar's (and at most one element
 // more at small counts), no coincident pairs unless the exemplar has them.
