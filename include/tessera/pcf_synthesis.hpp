@@ -142,7 +142,7 @@ struct PcfSynthOptions {
     // lowest PCF error fell by less than a fraction `convergence` per sweep over the last
     // 10 sweeps (0: never); the class is left at its lowest error.
     int max_iterations = 100;
-    double convergence = 1e-3;
+    double convergence = 3e-3;
     // Re-initialise elements whose individual PCF leaves the validity region after
     // refinement (section 6.4), at most this many rounds.
     int outlier_rounds = 2;

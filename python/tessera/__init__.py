@@ -115,7 +115,7 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
                patch_size=0.0, patch_candidates=16, relax_sweeps=4, physics=False, physics_substeps=5,
                gravity=None,
                floor_distance=0.0, boundary=None, boundary_distance=0.0, field=None,
-               max_fails=1000, grid_cells=64, epsilon0=0.0, epsilon_step=0.001, convergence=0.001,
+               max_fails=1000, grid_cells=64, epsilon0=0.0, epsilon_step=0.001, convergence=0.003,
                outlier_rounds=2, sigma=0.25, step=0.1, extent=5.0):
     """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement.
 
