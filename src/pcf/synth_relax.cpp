@@ -26,6 +26,10 @@ Exemplar in_output_order(const Exemplar& exemplar, const Arrangement& out, bool&
 
 void relax_output(const Exemplar& exemplar, const Domain& domain, const PcfSynthOptions& options, Arrangement& out) {
     if (out.dimension != 2 || out.elements.empty() || options.relax_sweeps == 0) return;
+    // Disks are matched on the disk metric's axis (Eq. 7-10), whose envelopes the plain
+    // distances' pair correlation would pull the output out of: points only.
+    for (const Element& e : exemplar.elements)
+        if (e.radius > 0.0) return;
     bool complete = false;
     const Exemplar ordered = in_output_order(exemplar, out, complete);
     if (!complete) return;
