@@ -1,72 +1,24 @@
 // The PCF model picture as PNG (tessera/pcf_plot.hpp), drawn from plot_layout on the
 // preview pictures' raster canvas: lines as anti-aliased capsules, the envelope filled
-// column by column with exact vertical coverage, and text from stb_easy_font, whose
-// glyphs are axis-aligned rectangles (no font file needed), filled by their pixel
-// coverage so that scaled text stays smooth.
+// column by column with exact vertical coverage, and text and rectangles from the
+// legends' text module (render/text.hpp).
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <stb_easy_font.h>
-
 #include "pcf/plot_layout.hpp"
 #include "render/raster.hpp"
+#include "render/text.hpp"
 
 namespace tessera {
 namespace {
 
 using render::Canvas;
 using render::Rgb;
-
-// Mixes `color` into pixel (x, y) by `alpha` (pixels outside the canvas are skipped).
-void blend(Canvas& canvas, int x, int y, Rgb color, double alpha) {
-    if (x < 0 || y < 0 || x >= canvas.width() || y >= canvas.height() || !(alpha > 0.0)) return;
-    const Rgb p = canvas.pixel(x, y);
-    const float a = static_cast<float>(std::min(alpha, 1.0));
-    canvas.set_pixel(x, y, {p.r + (color.r - p.r) * a, p.g + (color.g - p.g) * a, p.b + (color.b - p.b) * a});
-}
-
-// Fills [x0, x1] x [y0, y1] (pixel coordinates) with exact area coverage.
-void fill_rect(Canvas& canvas, double x0, double y0, double x1, double y1, Rgb color, double opacity = 1.0) {
-    for (int y = static_cast<int>(std::floor(y0)); y < std::ceil(y1); ++y) {
-        const double cy = std::min(y1, y + 1.0) - std::max(y0, static_cast<double>(y));
-        for (int x = static_cast<int>(std::floor(x0)); x < std::ceil(x1); ++x) {
-            const double cx = std::min(x1, x + 1.0) - std::max(x0, static_cast<double>(x));
-            blend(canvas, x, y, color, opacity * cx * cy);
-        }
-    }
-}
-
-// `text` with every character outside printable ASCII replaced by '?': the font has no
-// other glyphs, and it indexes its table with the (signed) char, so a byte >= 128 would
-// read before the table.
-std::string printable(std::string text) {
-    for (char& c : text)
-        if (c < 32 || c > 126) c = '?';
-    return text;
-}
-
-// Width in pixels of `text` at `scale` (stb_easy_font units are pixels at scale 1).
-double text_width(const std::string& text, double scale) {
-    std::string copy = printable(text);
-    return scale * stb_easy_font_width(copy.data());
-}
-
-// Draws `text` with its top-left corner at (x, y); non-ASCII characters as '?'.
-void draw_text(Canvas& canvas, std::string text, double x, double y, double scale, Rgb color) {
-    text = printable(text);
-    std::vector<char> buffer(text.size() * 64 * 16 + 64);  // up to about 64 quads of 64 bytes per glyph
-    const int quads = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(), static_cast<int>(buffer.size()));
-    for (int q = 0; q < quads; ++q) {
-        // Vertices 0 and 2 of a quad are opposite corners; each vertex is 16 bytes (x, y, z, colour).
-        float v0[2], v2[2];
-        std::copy_n(reinterpret_cast<const float*>(buffer.data() + q * 64), 2, v0);
-        std::copy_n(reinterpret_cast<const float*>(buffer.data() + q * 64 + 32), 2, v2);
-        fill_rect(canvas, x + scale * std::min(v0[0], v2[0]), y + scale * std::min(v0[1], v2[1]),
-                  x + scale * std::max(v0[0], v2[0]), y + scale * std::max(v0[1], v2[1]), color);
-    }
-}
+using render::draw_text;
+using render::fill_rect;
+using render::text_width;
 
 void draw_polyline(Canvas& canvas, const std::vector<pcf::PlotPoint>& v, double half_width, Rgb color) {
     for (size_t k = 1; k < v.size(); ++k) canvas.add_capsule(v[k - 1].x, v[k - 1].y, v[k].x, v[k].y, half_width);

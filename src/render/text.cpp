@@ -32,12 +32,12 @@ double text_width(const std::string& text, double scale) {
     return scale * stb_easy_font_width(copy.data());
 }
 
-void fill_rect(Canvas& canvas, double x0, double y0, double x1, double y1, Rgb color) {
+void fill_rect(Canvas& canvas, double x0, double y0, double x1, double y1, Rgb color, double opacity) {
     for (int y = static_cast<int>(std::floor(y0)); y < std::ceil(y1); ++y) {
         const double cy = std::min(y1, y + 1.0) - std::max(y0, static_cast<double>(y));
         for (int x = static_cast<int>(std::floor(x0)); x < std::ceil(x1); ++x) {
             const double cx = std::min(x1, x + 1.0) - std::max(x0, static_cast<double>(x));
-            blend(canvas, x, y, color, cx * cy);
+            blend(canvas, x, y, color, opacity * cx * cy);
         }
     }
 }

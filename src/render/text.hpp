@@ -18,7 +18,8 @@ inline double text_cap_height(double scale) { return 7.0 * scale; }
 // Draws `text` with the top-left corner of its first capital at (x, y).
 void draw_text(Canvas& canvas, const std::string& text, double x, double y, double scale, Rgb color);
 
-// Fills [x0, x1] x [y0, y1] (pixel coordinates) with exact area coverage.
-void fill_rect(Canvas& canvas, double x0, double y0, double x1, double y1, Rgb color);
+// Fills [x0, x1] x [y0, y1] (pixel coordinates) with exact area coverage, mixed in by
+// `opacity`.
+void fill_rect(Canvas& canvas, double x0, double y0, double x1, double y1, Rgb color, double opacity = 1.0);
 
 }  // namespace tessera::render
