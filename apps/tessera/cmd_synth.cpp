@@ -86,7 +86,7 @@ const std::vector<std::string> det_only_flags = {
     "--patch-candidates", "--physics", "--physics-substeps", "--gravity", "--floor-distance", "--field",
     "--boundary", "--boundary-distance"};
 const std::vector<std::string> pcf_only_flags = {"--max-fails",      "--grid-cells", "--epsilon0",
-                                                 "--epsilon-step",   "--convergence", "--outlier-rounds",
+                                                 "--epsilon-step",   "--convergence", "--stall", "--outlier-rounds",
                                                  "--sigma",          "--step",        "--extent"};
 
 tessera::Domain output_domain(const SynthArgs& args, const tessera::Exemplar& exemplar) {
@@ -138,6 +138,7 @@ void check_options(SynthArgs& args) {
         fail_option("--epsilon-step must be a number >= 0, got " + format_number(p.epsilon_step));
     if (!non_negative(p.convergence))
         fail_option("--convergence must be a number >= 0, got " + format_number(p.convergence));
+    if (!non_negative(p.stall)) fail_option("--stall must be a number >= 0, got " + format_number(p.stall));
     if (p.outlier_rounds < 0) fail_option("--outlier-rounds must be >= 0, got " + std::to_string(p.outlier_rounds));
     if (!positive(p.analysis.sigma)) fail_option("--sigma must be a number > 0, got " + format_number(p.analysis.sigma));
     if (!positive(p.analysis.step)) fail_option("--step must be a number > 0, got " + format_number(p.analysis.step));
@@ -366,8 +367,11 @@ Subcommand add_synth_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--convergence", args->pcf.convergence,
                     "pcf: a class's refinement stops when a sweep moves its elements by less than this x r_max in "
-                    "total, or when its lowest PCF error falls by less than this fraction per sweep over 10 sweeps, "
-                    ">= 0 (0: never).")
+                    "total, >= 0 (0: never).")
+        ->capture_default_str();
+    cmd->add_option("--stall", args->pcf.stall,
+                    "pcf: a class's refinement also stops when its lowest PCF error falls by less than this "
+                    "fraction per sweep over 10 sweeps, >= 0 (0: never).")
         ->capture_default_str();
     add_integer_option(*cmd, "--outlier-rounds", args->pcf.outlier_rounds,
                     "pcf: rounds of re-placing elements whose individual PCFs leave the validity region, >= 0.");

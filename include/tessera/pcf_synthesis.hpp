@@ -138,11 +138,12 @@ struct PcfSynthOptions {
     int max_fails = 1000;
     int grid_cells = 64;
     // Refinement (Eq. 4 to 6): at most max_iterations sweeps per class; stops when a sweep
-    // moves the elements by less than convergence * r_max in total, or when the class's
-    // lowest PCF error fell by less than a fraction `convergence` per sweep over the last
+    // moves the elements by less than convergence * r_max in total (0: never), or when the
+    // class's lowest PCF error fell by less than a fraction `stall` per sweep over the last
     // 10 sweeps (0: never); the class is left at its lowest error.
     int max_iterations = 100;
     double convergence = 3e-3;
+    double stall = 5e-3;
     // Re-initialise elements whose individual PCF leaves the validity region after
     // refinement (section 6.4), at most this many rounds.
     int outlier_rounds = 2;

@@ -83,6 +83,7 @@ void apply_pcf(tessera::PcfSynthOptions& o, const std::string& key, const py::ha
     else if (key == "epsilon0") o.epsilon0 = number(v, key);
     else if (key == "epsilon_step") o.epsilon_step = number(v, key);
     else if (key == "convergence") o.convergence = number(v, key);
+    else if (key == "stall") o.stall = number(v, key);
     else if (key == "outlier_rounds") o.outlier_rounds = integer(v, key);
     else if (key == "sigma") o.analysis.sigma = number(v, key);
     else if (key == "step") o.analysis.step = number(v, key);
@@ -198,7 +199,7 @@ void bind_synthesize(py::module_& m) {
         pcf["seed"] = p.seed, pcf["threads"] = p.threads, pcf["iterations"] = p.max_iterations;
         pcf["relax_sweeps"] = p.relax_sweeps;
         pcf["max_fails"] = p.max_fails, pcf["grid_cells"] = p.grid_cells, pcf["epsilon0"] = p.epsilon0;
-        pcf["epsilon_step"] = p.epsilon_step, pcf["convergence"] = p.convergence;
+        pcf["epsilon_step"] = p.epsilon_step, pcf["convergence"] = p.convergence, pcf["stall"] = p.stall;
         pcf["outlier_rounds"] = p.outlier_rounds, pcf["sigma"] = p.analysis.sigma, pcf["step"] = p.analysis.step;
         pcf["extent"] = p.analysis.extent;
         py::dict all;

@@ -39,7 +39,7 @@ _DEFAULTS = _tessera.default_options()
 _DET_ONLY = ("radius", "k", "search", "matching", "alpha", "lambda_", "patch_size", "patch_candidates",
              "physics", "physics_substeps", "gravity", "floor_distance", "boundary", "boundary_distance",
              "field")
-_PCF_ONLY = ("max_fails", "grid_cells", "epsilon0", "epsilon_step", "convergence", "outlier_rounds",
+_PCF_ONLY = ("max_fails", "grid_cells", "epsilon0", "epsilon_step", "convergence", "stall", "outlier_rounds",
              "sigma", "step", "extent")
 
 
@@ -116,7 +116,7 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
                gravity=None,
                floor_distance=0.0, boundary=None, boundary_distance=0.0, field=None,
                max_fails=1000, grid_cells=64, epsilon0=0.0, epsilon_step=0.001, convergence=0.003,
-               outlier_rounds=2, sigma=0.25, step=0.1, extent=5.0):
+               stall=0.005, outlier_rounds=2, sigma=0.25, step=0.1, extent=5.0):
     """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement.
 
     exemplar  an Exemplar (from tessera.exemplar or tessera.load), a path to one, or, for
@@ -147,7 +147,7 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
       physics_substeps, gravity ("-z", or a vector), floor_distance,
       boundary ("-x,+x" or ["-x", "+x"]) with boundary_distance, field (the --field forms,
       e.g. "vortex:5,5" or "grid:FILE.json").
-    pcf options: max_fails, grid_cells, epsilon0, epsilon_step, convergence, outlier_rounds,
+    pcf options: max_fails, grid_cells, epsilon0, epsilon_step, convergence, stall, outlier_rounds,
       sigma, step, extent.
     An option of the other method set to a value other than its default is an OptionError.
 
@@ -162,7 +162,8 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
                  physics_substeps=physics_substeps, gravity=gravity, floor_distance=floor_distance,
                  boundary=boundary, boundary_distance=boundary_distance, field=field,
                  max_fails=max_fails, grid_cells=grid_cells, epsilon0=epsilon0,
-                 epsilon_step=epsilon_step, convergence=convergence, outlier_rounds=outlier_rounds,
+                 epsilon_step=epsilon_step, convergence=convergence, stall=stall,
+                 outlier_rounds=outlier_rounds,
                  sigma=sigma, step=step, extent=extent)
     mine, theirs = (_DET_ONLY, _PCF_ONLY) if method == "det" else (_PCF_ONLY, _DET_ONLY)
     defaults = _DEFAULTS["pcf" if method == "det" else "det"]

@@ -288,7 +288,7 @@ double local_reach(const State& s, int c) {
     return kLocalReach * s.r_max + 2.0 * r;
 }
 
-RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence,
+RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence, double stall,
                     int threads, const std::function<void(double)>& on_sweep) {
     RefineReport report;
     if (elements.empty() || max_iterations <= 0) return report;
@@ -374,7 +374,7 @@ RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_i
         }
         // Converged when the sweep moved the elements by less than convergence x r_max in
         // total (the paper's test), or when the error stalled: over the last kStallSweeps
-        // sweeps its lowest value fell by less than a fraction `convergence` per sweep. Large
+        // sweeps its lowest value fell by less than a fraction `stall` per sweep. Large
         // classes rarely pass the first: near the error's floor the tiles of a colour each
         // improve the sums they see and together overshoot, so the elements keep moving
         // while the error jitters by a few percent. (A mean movement per element instead
@@ -382,9 +382,9 @@ RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_i
         energies.push_back(energy);
         const size_t n = energies.size();
         bool stalled = false;
-        if (convergence > 0.0 && n >= 2 * kStallSweeps) {
+        if (stall > 0.0 && n >= 2 * kStallSweeps) {
             const double before = *std::min_element(energies.begin(), energies.end() - kStallSweeps);
-            stalled = before - best_energy <= convergence * static_cast<double>(kStallSweeps) * before;
+            stalled = before - best_energy <= stall * static_cast<double>(kStallSweeps) * before;
         }
         if (movement < convergence * s.r_max || stalled) {
             report.converged = true;

@@ -76,7 +76,7 @@ double local_reach(const State& s, int c);
 
 // Refinement of `elements` (placed, of class c) by Eq. 4 to 6 against the class's PCFs,
 // at most max_iterations sweeps; on_sweep(energy) after each one.
-RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence,
+RefineReport refine(State& s, int c, const std::vector<int>& elements, int max_iterations, double convergence, double stall,
                     int threads, const std::function<void(double energy)>& on_sweep);
 
 }  // namespace tessera::pcf

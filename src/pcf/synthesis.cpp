@@ -52,6 +52,7 @@ void check_options(const PcfSynthOptions& o) {
         bad_option("grid_cells must be from 1 to 4096, got " + std::to_string(o.grid_cells));
     if (o.max_iterations < 0) bad_option("max_iterations must be >= 0, got " + std::to_string(o.max_iterations));
     if (!finite_at_least(o.convergence, 0.0)) bad_option("convergence must be a finite number >= 0");
+    if (!finite_at_least(o.stall, 0.0)) bad_option("stall must be a finite number >= 0");
     if (o.outlier_rounds < 0) bad_option("outlier_rounds must be >= 0, got " + std::to_string(o.outlier_rounds));
     if (o.relax_sweeps < 0 || o.relax_sweeps > 1000)
         bad_option("relax_sweeps must be from 0 to 1000, got " + std::to_string(o.relax_sweeps));
@@ -252,7 +253,8 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     // Returns 1 when the refinement stopped at its sweep bound, not by convergence.
     const auto run_refine = [&](int c, const std::vector<int>& elements, int sweeps) {
         sweep_start = Clock::now();
-        const pcf::RefineReport r = pcf::refine(state, c, elements, sweeps, options.convergence, threads, on_sweep);
+        const pcf::RefineReport r = pcf::refine(state, c, elements, sweeps, options.convergence, options.stall, threads,
+                                                    on_sweep);
         return r.sweeps > 0 && !r.converged ? 1 : 0;
     };
 

@@ -457,6 +457,7 @@ const ErrorCase error_cases[] = {
     {"pcf_negative_max_fails", "", "", synth_poisson + "--method pcf --max-fails -1", 2, {"--max-fails"}},
     {"pcf_zero_sigma", "", "", synth_poisson + "--method pcf --sigma 0", 2, {"--sigma"}},
     {"pcf_negative_convergence", "", "", synth_poisson + "--method pcf --convergence -1", 2, {"--convergence"}},
+    {"pcf_negative_stall", "", "", synth_poisson + "--method pcf --stall -1", 2, {"--stall"}},
     {"unknown_option", "", "", synth_poisson + "--colour red", 2, {"--colour"}},
     {"unknown_output_extension", "", "", "synth '{ex}poisson_disk_2d.json' -o '{work}/out.xyz'", 2,
      {"-o", "out.xyz", ".xyz"}},
