@@ -38,9 +38,10 @@ struct EditReport {
     double threshold = 0.0;              // the threshold used
 };
 
-// Applies `edit` to its element and to every element with a similar neighbourhood.
-// Throws Error(input) if the element, type or an attribute does not exist, or the
-// edit is not valid (radius <= 0, non-finite numbers).
+// Applies `edit` to its element and to every unlocked element with a similar
+// neighbourhood (locked elements are never changed). Throws Error(input) if the element,
+// type or an attribute does not exist, the element is locked, or the edit is not valid
+// (radius <= 0, non-finite numbers).
 Exemplar edit_elements(const Exemplar& data, const ElementEdit& edit, const EditOptions& options = {},
                        EditReport* report = nullptr);
 

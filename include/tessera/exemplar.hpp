@@ -73,7 +73,7 @@ struct Exemplar {
     int type_index(const std::string& name);
     // Appends an element made of `positions` (sample ids 0..n-1) and returns its index.
     int add_element(int type, const std::vector<Vec3>& positions, double radius = 0.0);
-    // Recomputes each element's position (centroid) from its samples.
+    // Recomputes each unlocked element's position (centroid) from its samples.
     void update_positions();
     // True when some element has more than one sample.
     bool has_multi_sample_elements() const;

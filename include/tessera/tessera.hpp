@@ -2,6 +2,7 @@
 #pragma once
 
 #include "tessera/det.hpp"
+#include "tessera/det_session.hpp"
 #include "tessera/domain.hpp"
 #include "tessera/edit.hpp"
 #include "tessera/error.hpp"

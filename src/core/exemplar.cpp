@@ -44,6 +44,7 @@ int Exemplar::add_element(int type, const std::vector<Vec3>& positions, double r
 
 void Exemplar::update_positions() {
     for (auto& e : elements) {
+        if (e.locked) continue;  // a locked element's pose is the user's, to the bit
         Vec3 c;
         for (int s = 0; s < e.sample_count; ++s) c += samples[e.first_sample + s].p;
         if (e.sample_count > 0) e.position = c / static_cast<double>(e.sample_count);

@@ -60,6 +60,8 @@ Exemplar edit_elements(const Exemplar& data, const ElementEdit& edit, const Edit
     data.validate("the data to edit");
     check_edit(data, edit);
     const int edited = find_element(data, edit.element);
+    if (data.elements[edited].locked)
+        throw Error(ErrorKind::input, "the edit names element " + std::to_string(edit.element) + ", which is locked");
     DetOptions det_options;
     det_options.radius = options.radius;
     const det::Params params = det::resolve_params(data, det_options);
@@ -84,7 +86,7 @@ Exemplar edit_elements(const Exemplar& data, const ElementEdit& edit, const Edit
     core::parallel_for(n, threads, [&](int begin, int end, int t) {
         for (int e = begin; e < end; ++e) {
             const Element& el = data.elements[e];
-            if (el.sample_count != source.sample_count) continue;
+            if (el.locked || el.sample_count != source.sample_count) continue;  // locked: never changed
             if (el.sample_count > 1 && el.type != source.type) continue;
             double d = 0.0;
             for (int s = 0; s < el.sample_count && d <= threshold; ++s) {

@@ -1,6 +1,7 @@
 #include "det/init.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/rng.hpp"
@@ -92,8 +93,9 @@ struct CellContext {
 // The patch-copy initialization, one cell after the other in raster order.
 class PatchCopier {
 public:
-    PatchCopier(const Exemplar& exemplar, const Domain& domain, const Params& params, const DetOptions& options)
-        : ex_(exemplar), domain_(domain), params_(params), options_(options), dim_(params.dimension),
+    PatchCopier(const Exemplar& exemplar, const Domain& domain, const Params& params, const DetOptions& options,
+                const InitTick& tick)
+        : ex_(exemplar), domain_(domain), params_(params), options_(options), tick_(tick), dim_(params.dimension),
           in_box_(exemplar.domain.bounds()), out_box_(domain.bounds()),
           layer_(layer_axes(in_box_, dim_, params.radius)), rng_(options.seed, core::Purpose::patch_choice) {}
 
@@ -115,6 +117,7 @@ private:
     const Domain& domain_;
     const Params& params_;
     const DetOptions& options_;
+    const InitTick& tick_;
     const int dim_;
     const Box in_box_, out_box_;
     const LayerAxes layer_;
@@ -447,7 +450,13 @@ void PatchCopier::copy(const PatchMap& map, const CellContext& cell) {
 InitResult PatchCopier::run() {
     prepare();
     const Vec3 half = Vec3{patch_, patch_, dim_ == 3 ? patch_ : 0.0} * 0.5;
+    auto last_tick = std::chrono::steady_clock::now();
     for (int c = 0; c < cells_.count(); ++c) {
+        // The caller's tick (progress, cancellation) about every 50 ms.
+        if (tick_ && std::chrono::steady_clock::now() - last_tick > std::chrono::milliseconds(50)) {
+            tick_(c, cells_.count());
+            last_tick = std::chrono::steady_clock::now();
+        }
         const CellContext cell = context_of(c);
         PatchMap map;
         map.out_center = cell.lo + half;
@@ -483,8 +492,8 @@ InitResult PatchCopier::run() {
 }  // namespace
 
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& /*index*/, const Domain& domain,
-                              const Params& params, const DetOptions& options) {
-    return PatchCopier(exemplar, domain, params, options).run();
+                              const Params& params, const DetOptions& options, const InitTick& tick) {
+    return PatchCopier(exemplar, domain, params, options, tick).run();
 }
 
 }  // namespace tessera::det

@@ -7,6 +7,8 @@
 // aligned across seams.
 #pragma once
 
+#include <functional>
+
 #include "core/crowding_repair.hpp"
 #include "det/model.hpp"
 #include "det/provenance.hpp"
@@ -24,8 +26,12 @@ struct InitResult {
     Provenance provenance() { return {arrangement, source_sample, source_element}; }
 };
 
+// Called now and then with the cells done and the cell count (progress; it may throw
+// Cancelled to stop the initialization).
+using InitTick = std::function<void(int done, int total)>;
+
 InitResult initialize_patches(const Exemplar& exemplar, const InputIndex& index, const Domain& domain,
-                              const Params& params, const DetOptions& options);
+                              const Params& params, const DetOptions& options, const InitTick& tick = {});
 
 // Removes the most crowded elements (nearest neighbour closest relative to the exemplar's
 // typical distance for that pair of types) of every type that holds more than its

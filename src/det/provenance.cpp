@@ -19,7 +19,7 @@ int append_copy(Provenance into, const Exemplar& exemplar, int source, const Qua
     const Element& src = exemplar.elements[source];
     Element e = src;
     e.first_sample = static_cast<int>(out.samples.size());
-    e.id = out.elements.size();
+    e.id = kNewElementId;  // numbered by the session (det/session_steps.hpp, number_new_elements)
     e.locked = false;
     const int index_out = static_cast<int>(out.elements.size());
     for (int s = 0; s < src.sample_count; ++s) {
@@ -48,7 +48,6 @@ void keep_only(Provenance of, const std::vector<char>& keep) {
         Element element = out.elements[e];
         const int index = static_cast<int>(elements.size());
         element.first_sample = static_cast<int>(samples.size());
-        element.id = static_cast<std::uint64_t>(index);
         for (int s = 0; s < element.sample_count; ++s) {
             const int old = out.elements[e].first_sample + s;
             Sample smp = out.samples[old];

@@ -5,6 +5,7 @@
 // with the arrangement; a Provenance views either.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "tessera/exemplar.hpp"
@@ -22,7 +23,10 @@ struct Provenance {
 int append_copy(Provenance into, const Exemplar& exemplar, int source, const Quat& rotation, const Vec3& shift,
                 int dimension);
 
-// Keeps the elements with keep[e] (their samples and provenance), renumbering ids 0..n-1.
+// The id of an element a step has just made; the session numbers it before the call returns.
+constexpr std::uint64_t kNewElementId = ~std::uint64_t{0};
+
+// Keeps the elements with keep[e] (their samples, provenance and ids).
 void keep_only(Provenance of, const std::vector<char>& keep);
 
 // Element positions (centroids), z = 0 in 2D: the points of the grids over elements.

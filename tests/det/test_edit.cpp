@@ -76,3 +76,35 @@ TEST(DetEdit, ReportsEditsOfThingsThatDoNotExist) {
     EXPECT_EQ(parsed.offset, Vec3(1, 2, 0));
     EXPECT_DOUBLE_EQ(*parsed.radius, 0.5);
 }
+
+TEST(DetEdit, LeavesLockedElementsAloneAndRefusesToEditOne) {
+    Exemplar ex = striped_lattice();
+    ElementEdit edit;
+    edit.element = 10 * 20 + 10;
+    edit.offset = {0.2, 0.1, 0};
+    EditOptions options;
+    options.threshold = 0.5;
+    EditReport all;
+    edit_elements(ex, edit, options, &all);
+    ASSERT_GT(all.changed.size(), 10u);
+    // Lock the half of the would-be changed elements with the smaller ids.
+    std::set<std::uint64_t> locked;
+    for (size_t k = 0; k < all.changed.size(); ++k)
+        if (all.changed[k] != edit.element && k % 2 == 0) locked.insert(all.changed[k]);
+    for (Element& e : ex.elements) e.locked = locked.count(e.id) > 0;
+    EditReport report;
+    const Exemplar out = edit_elements(ex, edit, options, &report);
+    for (std::uint64_t id : report.changed) EXPECT_EQ(locked.count(id), 0u) << "locked element " << id << " edited";
+    EXPECT_EQ(report.changed.size(), all.changed.size() - locked.size());
+    for (size_t i = 0; i < ex.elements.size(); ++i)
+        if (ex.elements[i].locked) {
+            EXPECT_EQ(norm(out.elements[i].position - ex.elements[i].position), 0.0);
+        }
+    edit.element = *locked.begin();
+    try {
+        edit_elements(ex, edit, options);
+        FAIL() << "a locked element was edited";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("locked"), std::string::npos) << e.what();
+    }
+}
