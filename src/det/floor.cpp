@@ -24,14 +24,35 @@ Gravity resolve_gravity(const Vec3& gravity, int dimension) {
     return g;
 }
 
-double element_elevation(const Exemplar& data, const Element& e, const Gravity& gravity) {
-    // The sample farthest along gravity is the lowest; its coordinate is the elevation.
-    double lowest = data.samples[e.first_sample].p[gravity.axis];
+Vec3 lowest_sample(const Exemplar& data, const Element& e, const Gravity& gravity) {
+    // The sample farthest along gravity is the lowest.
+    Vec3 lowest = data.samples[e.first_sample].p;
     for (int s = 1; s < e.sample_count; ++s) {
-        const double v = data.samples[e.first_sample + s].p[gravity.axis];
-        if (v * gravity.sign > lowest * gravity.sign) lowest = v;
+        const Vec3& p = data.samples[e.first_sample + s].p;
+        if (p[gravity.axis] * gravity.sign > lowest[gravity.axis] * gravity.sign) lowest = p;
     }
     return lowest;
+}
+
+double element_elevation(const Exemplar& data, const Element& e, const Gravity& gravity) {
+    return lowest_sample(data, e, gravity)[gravity.axis];
+}
+
+double height_above_floor(const Domain& domain, const Vec3& p, const Gravity& gravity, double reach) {
+    if (!domain.inside(p)) return 0.0;
+    constexpr int kSteps = 64, kBisections = 20;
+    const Vec3 down = gravity.vector();
+    const double step = reach / kSteps;
+    for (int k = 1; k <= kSteps; ++k) {
+        if (domain.inside(p + down * (k * step))) continue;
+        double in = (k - 1) * step, out = k * step;  // the boundary lies between
+        for (int b = 0; b < kBisections; ++b) {
+            const double mid = 0.5 * (in + out);
+            (domain.inside(p + down * mid) ? in : out) = mid;
+        }
+        return 0.5 * (in + out);
+    }
+    return INFINITY;
 }
 
 std::vector<char> floor_elements(const Exemplar& data, const Domain& domain, const Gravity& gravity,

@@ -45,5 +45,11 @@ inline constexpr char floor_bit = 1;
 // Elevation of an element: its lowest sample's coordinate along gravity's axis
 // (lowest in the direction gravity points).
 double element_elevation(const Exemplar& data, const Element& e, const Gravity& gravity);
+// That lowest sample's position.
+Vec3 lowest_sample(const Exemplar& data, const Element& e, const Gravity& gravity);
+
+// How far below p (along gravity) the domain ends, found to 1e-6 of `reach` by stepping and
+// bisection; infinity when it does not end within `reach` (no floor near), 0 outside.
+double height_above_floor(const Domain& domain, const Vec3& p, const Gravity& gravity, double reach);
 
 }  // namespace tessera::det

@@ -97,7 +97,7 @@ public:
                 const InitTick& tick)
         : ex_(exemplar), domain_(domain), params_(params), options_(options), tick_(tick), dim_(params.dimension),
           in_box_(exemplar.domain.bounds()), out_box_(domain.bounds()),
-          layer_(layer_axes(in_box_, dim_, params.radius)), rng_(options.seed, core::Purpose::patch_choice) {}
+          layer_(layer_axes(in_box_, dim_, params.radius)) {}
 
     InitResult run();
 
@@ -107,6 +107,7 @@ private:
     CellContext context_of(int c) const;
     std::vector<Vec3> candidate_centres(const CellContext& cell, int tries) const;
     Vec3 random_centre(const CellContext& cell, int j) const;
+    core::KeyedRng cell_rng(int c) const;
     double score(const PatchMap& map, const CellContext& cell);
     void register_window(PatchMap& map, const CellContext& cell, double& best_score);
     void window_elements_in_cell(const PatchMap& m, const Vec3& clo, std::vector<int>& elements) const;
@@ -121,7 +122,7 @@ private:
     const int dim_;
     const Box in_box_, out_box_;
     const LayerAxes layer_;
-    const core::KeyedRng rng_;
+    std::int64_t world_cell_[3] = {0, 0, 0};  // world lattice coordinates of cell 0
 
     double patch_ = 0.0, structure_ = 0.0, band_ = 0.0, window_reach_ = 0.0;
     Vec3 window_size_, window_half_;
@@ -179,10 +180,20 @@ void PatchCopier::choose_patch() {
 
 void PatchCopier::prepare() {
     choose_patch();
+    // The cells are those of a lattice anchored at the world origin, and each cell's draws
+    // are keyed by its lattice coordinates: the same seed gives the same cell the same
+    // windows however large the domain around it is (DESIGN.md, randomness keyed by the world).
     cells_.lo = out_box_.lo;
     cells_.size = patch_;
-    for (int k = 0; k < dim_; ++k)
-        cells_.dims[k] = std::max(1, static_cast<int>(std::ceil((out_box_.hi[k] - out_box_.lo[k]) / patch_ - 1e-9)));
+    for (int k = 0; k < dim_; ++k) {
+        const double first = std::floor(out_box_.lo[k] / patch_ + 1e-9);
+        if (!(std::abs(first) < 4e18))
+            throw Error(ErrorKind::domain, "the output domain " + domain_.describe() +
+                                               " is too far from the origin for patches of " + std::to_string(patch_));
+        world_cell_[k] = static_cast<std::int64_t>(first);
+        cells_.lo[k] = first * patch_;
+        cells_.dims[k] = std::max(1, static_cast<int>(std::ceil((out_box_.hi[k] - cells_.lo[k]) / patch_ - 1e-9)));
+    }
     if (static_cast<double>(cells_.count()) > 5e7)
         throw Error(ErrorKind::option, "--patch-size is too small for this domain (more than 5e7 patches)");
 
@@ -270,11 +281,20 @@ CellContext PatchCopier::context_of(int c) const {
     return cell;
 }
 
+core::KeyedRng PatchCopier::cell_rng(int c) const {
+    const std::int64_t x = world_cell_[0] + c % cells_.dims[0];
+    const std::int64_t y = world_cell_[1] + (c / cells_.dims[0]) % cells_.dims[1];
+    const std::int64_t z = world_cell_[2] + c / (cells_.dims[0] * cells_.dims[1]);
+    return core::KeyedRng(options_.seed, core::Purpose::patch_choice,
+                          core::mix64(static_cast<std::uint64_t>(x)) ^ static_cast<std::uint64_t>(y),
+                          static_cast<std::uint64_t>(z));
+}
+
 Vec3 PatchCopier::random_centre(const CellContext& cell, int j) const {
     Vec3 origin = in_box_.lo;
     for (int k = 0; k < dim_; ++k) {
         const double span = (in_box_.hi[k] - in_box_.lo[k]) - window_size_[k];
-        origin[k] += span > 0.0 ? span * rng_.uniform(static_cast<std::uint64_t>(cell.cell) * 64 * 3 + j * 3 + k) : 0.0;
+        origin[k] += span > 0.0 ? span * cell_rng(cell.cell).uniform(static_cast<std::uint64_t>(j) * 3 + k) : 0.0;
         // With floor constraints the exemplar's sides are physical (a floor, walls): a
         // cell on a side of the output's bounds takes its window flush with the same
         // side of the exemplar, so boundary layers line up. (Without them the exemplar
@@ -375,6 +395,9 @@ void PatchCopier::register_window(PatchMap& map, const CellContext& cell, double
             ++matched;
         }
         if (matched < 3) return;
+        // With floor constraints, windows are laid flush with the floor (random_centre), and
+        // a shift along gravity would lift or sink a floor row off the exemplar's height.
+        if (params_.floor_constraints && !params_.field.active()) shift[params_.gravity.axis] = 0.0;
         trial.in_center += shift * (1.0 / matched);
         for (int k = 0; k < dim_; ++k)  // the window stays inside the exemplar
             trial.in_center[k] = std::clamp(trial.in_center[k], in_box_.lo[k] + window_half_[k],

@@ -80,6 +80,45 @@ double exemplar_hole_radius(const Exemplar& exemplar, double spacing, double rad
     return core::largest_empty_ball(p, rim, domain, dim, step, 1).radius;
 }
 
+namespace {
+
+// Constrained selection (section 5) for the elements holes receive: a copy of an exemplar
+// floor element goes down or up to the source's own height above its floor (the assignment
+// then holds that elevation, det/assign.cpp), and only where a floor is that near.
+struct FloorCopies {
+    bool active = false;
+    Gravity gravity;
+    double reach = 0.0;
+    std::vector<double> height;  // per exemplar element: above its floor; infinity = not a floor element
+
+    bool place(const Exemplar& ex, int source, const Quat& frame, const Domain& domain, Vec3& at) const {
+        if (!active || !std::isfinite(height[source])) return true;
+        const Element& src = ex.elements[source];
+        const Vec3 low = frame.rotate(lowest_sample(ex, src, gravity) - src.position) + at;
+        const double here = height_above_floor(domain, low, gravity, reach);
+        if (!std::isfinite(here)) return false;  // no floor near: not a place for a floor element
+        at += gravity.vector() * (here - height[source]);
+        return true;
+    }
+};
+
+FloorCopies floor_copies(const Exemplar& ex, const Params& params) {
+    FloorCopies f;
+    if (!params.floor_constraints) return f;
+    f.active = true;
+    f.gravity = params.gravity;
+    f.reach = std::max(params.floor_distance, params.spacing) * 2.0;
+    const std::vector<char> code = floor_elements(ex, ex.domain, params.gravity, params.floor_distance, params.boundary);
+    f.height.assign(ex.elements.size(), INFINITY);
+    for (size_t e = 0; e < ex.elements.size(); ++e) {
+        if (!(code[e] & floor_bit)) continue;
+        f.height[e] = height_above_floor(ex.domain, lowest_sample(ex, ex.elements[e], f.gravity), f.gravity, f.reach);
+    }
+    return f;
+}
+
+}  // namespace
+
 VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Domain& domain, const Params& params,
                              const core::CrowdingBounds& tails, const VacancySettings& settings) {
     VacancyReport report;
@@ -127,6 +166,7 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
     const double count_gap = 0.25 * spacing;
     const long bound = std::max<long>(16, std::lround(kInsertionBound * static_cast<double>(total_target)));
     const core::KeyedRng rng(settings.seed, core::Purpose::jitter, settings.round);
+    const FloorCopies floor = floor_copies(exemplar, params);
     std::vector<double> nearest;
     while (!heap.empty()) {
         const auto [ranked, negative] = heap.top();
@@ -160,14 +200,16 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
             const std::uint64_t key = static_cast<std::uint64_t>(-negative) * kCopiesTried + attempt;
             const int source = of_type[type][rng.below(key, of_type[type].size())];
             const Element& src = exemplar.elements[source];
+            Vec3 at = c;
+            if (!floor.place(exemplar, source, frame, domain, at)) continue;
             // Inside, and no more than half its radius beyond the boundary: a hole between the
             // last row and a wall too narrow for an element is not filled with half an element.
             bool inside = true;
             for (int s = 0; s < src.sample_count && inside; ++s) {
-                const Vec3 q = frame.rotate(exemplar.samples[src.first_sample + s].p - src.position) + c;
+                const Vec3 q = frame.rotate(exemplar.samples[src.first_sample + s].p - src.position) + at;
                 inside = domain.inside(q) && (layered || domain.distance_to_boundary(q) >= 0.5 * src.radius);
             }
-            if (inside) added = append_copy(into, exemplar, source, frame, c - frame.rotate(src.position), dim);
+            if (inside) added = append_copy(into, exemplar, source, frame, at - frame.rotate(src.position), dim);
         }
         if (added < 0) continue;  // nothing fits here
         const Element& e = out.elements[added];

@@ -82,20 +82,51 @@ TEST(DetSynthesis, ByteIdenticalWhateverTheThreadCount) {
     EXPECT_NE(one, to_json(synthesize_det(ex, ex.domain.scaled(2.0), o)));
 }
 
-TEST(DetSynthesis, TranslatingTheInputTranslatesTheOutput) {
+TEST(DetSynthesis, TranslatingTheExemplarLeavesTheOutputAlone) {
+    // The output depends on the exemplar's elements relative to its window, not on where the
+    // window lies; the random draws are keyed by the output's world cells.
     Exemplar ex = example("poisson_disk_2d.json");
     DetOptions o;
     o.iterations = 4;
-    const Arrangement a = synthesize_det(ex, ex.domain.scaled(2.0), o);
+    const Domain out = ex.domain.scaled(2.0);
+    const Arrangement a = synthesize_det(ex, out, o);
     const Vec3 shift{100.25, -40.5, 0};
     for (auto& s : ex.samples) s.p += shift;
     ex.domain = Domain::box(ex.domain.bounds().lo + shift, ex.domain.bounds().hi + shift, 2);
     ex.update_positions();
-    const Arrangement b = synthesize_det(ex, ex.domain.scaled(2.0), o);
+    const Arrangement b = synthesize_det(ex, out, o);
     ASSERT_EQ(a.samples.size(), b.samples.size());
     double worst = 0.0;
-    for (size_t i = 0; i < a.samples.size(); ++i) worst = std::max(worst, norm(b.samples[i].p - shift - a.samples[i].p));
+    for (size_t i = 0; i < a.samples.size(); ++i) worst = std::max(worst, norm(b.samples[i].p - a.samples[i].p));
     EXPECT_LT(worst, 1e-6);
+}
+
+TEST(DetSynthesis, TheSameSeedDrawsTheSameWindowsAtTheSamePlaceInAnyDomain) {
+    // The initialization of a domain and of one four times larger around the same origin:
+    // the first cell (no earlier neighbours in either) takes the same exemplar window, so
+    // the elements well inside it are the same.
+    const Exemplar ex = example("poisson_disk_2d.json");
+    DetOptions o;
+    o.iterations = 0;
+    o.relax_sweeps = 0;
+    o.patch_size = 4.0;
+    o.patch_candidates = 1;
+    const Box b = ex.domain.bounds();
+    const Arrangement small = synthesize_det(ex, Domain::box({0, 0, 0}, {8, 8, 0}, 2), o);
+    const Arrangement large = synthesize_det(ex, Domain::box({0, 0, 0}, {32, 32, 0}, 2), o);
+    (void)b;
+    int inner = 0, same = 0;
+    for (const Element& e : small.elements) {
+        if (e.position.x < 0.5 || e.position.x > 3.5 || e.position.y < 0.5 || e.position.y > 3.5) continue;
+        ++inner;
+        for (const Element& f : large.elements)
+            if (norm(f.position - e.position) < 1e-9) {
+                ++same;
+                break;
+            }
+    }
+    EXPECT_GT(inner, 5);
+    EXPECT_GE(same, inner * 9 / 10) << same << " of " << inner;
 }
 
 TEST(DetSynthesis, MultiSampleSticksKeepTheirShape) {
