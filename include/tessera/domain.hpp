@@ -111,6 +111,9 @@ public:
     // boxes; other kinds interpolate a table computed once (on first use) from a
     // rasterization (256 cells along the longest side in 2D, 48 in 3D).
     double translated_overlap(const Vec3& d) const;
+    // Computes that table now with `threads` workers (0 = all) if it is not there yet; a
+    // method calls this with its own thread count before its first translated_overlap.
+    void prepare_overlap(int threads) const;
     // A point of the domain nearest to p (p itself when inside); inside(result) holds.
     // Exact for boxes and polygons; voxel kinds return a point on the segment to the
     // nearest inside voxel centre, within about a cell of the boundary (meshes and

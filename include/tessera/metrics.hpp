@@ -15,6 +15,7 @@ struct PcfOptions {
     double r_max = 0.0;      // largest r; 0 = automatic: 5 x mean nearest-neighbour distance
     double bandwidth = 0.0;  // Gaussian kernel standard deviation; 0 = automatic: r_max / 40
     int bins = 0;            // number of r values (r_k = k r_max / (bins - 1)); 0 = 101 (>= 2)
+    int threads = 0;         // worker threads, 0 = all; the result is the same for any value
 };
 
 // g(r) for one ordered class pair (a, b), a <= b.
@@ -53,7 +54,7 @@ struct NearestNeighborStats {
     double mean = 0.0, stddev = 0.0, min = 0.0, max = 0.0;
     std::vector<double> distances;   // per element, element order
 };
-NearestNeighborStats nearest_neighbor_distances(const Exemplar& points);
+NearestNeighborStats nearest_neighbor_distances(const Exemplar& points, int threads = 0);  // 0 = all threads
 
 // Hexatic order |psi6| of each element: |1/6 sum_k exp(6 i theta_k)| over its 6
 // nearest neighbours (2D only). Elements closer than `boundary_margin` to the domain
@@ -89,7 +90,7 @@ struct EmptyCircle {
     double radius = 0.0;
     Vec3 center;
 };
-EmptyCircle largest_empty_circle(const Exemplar& data);
+EmptyCircle largest_empty_circle(const Exemplar& data, int threads = 0);  // 0 = all threads
 
 // Shapes of multi-sample elements, per type the exemplar and the output share: the mean
 // distance between consecutive samples in both, the 95th percentile of the output's

@@ -117,7 +117,8 @@ struct PcfModel {
 // Throws Error(input) naming the class for: a class without elements, a
 // radius < 0, a dependency cycle (naming the classes on it) or an unknown class name;
 // Error(option) for bad settings; Error(input) for 3D data or multi-sample elements.
-PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSettings& settings = {});
+// `threads`: worker threads (0 = all); the model is the same for any value.
+PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSettings& settings = {}, int threads = 0);
 
 // The model as JSON (`tessera analyze -o model.json`) and back.
 std::string pcf_model_to_json(const PcfModel& model);
@@ -125,7 +126,7 @@ PcfModel pcf_model_from_json(const std::string& text, const std::string& source)
 
 // PCFs of an arrangement on a model's axis and class pairs (r_max and settings of the
 // model, the arrangement's own domain and counts): mean and envelopes, in model.pcfs order.
-std::vector<PcfEnvelope> measure_distribution(const PcfModel& model, const Exemplar& data);
+std::vector<PcfEnvelope> measure_distribution(const PcfModel& model, const Exemplar& data, int threads = 0);
 
 struct PcfSynthOptions {
     PcfAnalysisSettings analysis;

@@ -112,6 +112,7 @@ struct PythonProgress {
                 d["iterations"] = event.iterations;
                 d["energy"] = event.energy;
                 d["elapsed"] = event.elapsed_s;
+                d["fraction"] = event.fraction;
                 const py::object answer = (*call)(d);
                 return !(py::isinstance<py::bool_>(answer) && !answer.cast<bool>());
             } catch (py::error_already_set& e) {

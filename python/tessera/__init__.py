@@ -134,10 +134,12 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
     relax_sweeps  sweeps of the final pair-correlation relaxation (default 4, 0 = off; det:
               exemplars of single-sample elements; pcf: synthesis from an exemplar).
     progress  optional callable, called with a dict (stage, iteration, iterations, energy,
-              elapsed) for every event of the run: its set-up stages ("init", and others a
-              method may add, e.g. "index") with their fraction done iteration / iterations
-              where they have one, every iteration ("iteration") and the end ("done"); the
-              same events the CLI prints. Return False to cancel (tessera.Cancelled is
+              elapsed, fraction) for every event of the run: its stages (det: "init",
+              "patches", "fill", "iteration", "relax", "repair", "settle" with physics;
+              pcf: "analysis", "init", "iteration", "repair") with their step
+              iteration / iterations where they have one, and the end ("done"); fraction is
+              the share of the whole run done, 0 to 1 (1 at "done"); the same events the
+              CLI prints. Return False to cancel (tessera.Cancelled is
               raised); an exception it raises cancels the run and propagates.
 
     det options (docs/cli.md and `tessera synth --help` give the details):

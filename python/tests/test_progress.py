@@ -92,5 +92,19 @@ def test_every_event_of_the_run_reaches_the_callback(two_class):
     stages = [e["stage"] for e in events]
     assert stages[0] == "init" and stages[-1] == "done"
     assert stages.count("iteration") == 2
-    assert all(set(e) == {"stage", "iteration", "iterations", "energy", "elapsed"} for e in events)
+    assert all(set(e) == {"stage", "iteration", "iterations", "energy", "elapsed", "fraction"} for e in events)
     assert [e["elapsed"] for e in events] == sorted(e["elapsed"] for e in events)
+
+
+@pytest.mark.parametrize("method", ["det", "pcf"])
+def test_the_fraction_done_rises_to_one(two_class, method):
+    events = []
+    tessera.synthesize(two_class, method=method, progress=events.append)
+    fractions = [e["fraction"] for e in events]
+    assert fractions == sorted(fractions), fractions
+    assert 0.0 <= fractions[0] < 0.2 and fractions[-1] == 1.0
+    assert any(0.3 < f < 0.9 for f in fractions)
+    stages = {e["stage"] for e in events}
+    expected = {"det": {"init", "patches", "fill", "iteration", "relax", "repair", "done"},
+                "pcf": {"analysis", "init", "iteration", "repair", "done"}}[method]
+    assert stages <= expected | {"settle"} and {"init", "iteration", "done"} <= stages

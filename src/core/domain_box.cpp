@@ -52,6 +52,10 @@ double Domain::measure() const {
     return m;
 }
 
+void Domain::prepare_overlap(int threads) const {
+    if (kind_ != Kind::box) shape_->prepare_overlap(threads);
+}
+
 double Domain::translated_overlap(const Vec3& d) const {
     if (kind_ != Kind::box) return shape_->translated_overlap(d * (1.0 / scale_)) * std::pow(scale_, dimension_);
     double m = 1.0;

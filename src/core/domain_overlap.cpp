@@ -28,7 +28,11 @@ uint64_t bits_at(const uint64_t* row, int words, long start) {
 
 }  // namespace
 
-void DomainShape::build_overlap_table() const {
+void DomainShape::prepare_overlap(int threads) const {
+    std::call_once(overlap_once_, [this, threads] { build_overlap_table(threads); });
+}
+
+void DomainShape::build_overlap_table(int requested_threads) const {
     const int cells = dimension == 2 ? 256 : 48;
     const Vec3 size = bounds.size();
     double longest = 0.0;
@@ -39,7 +43,7 @@ void DomainShape::build_overlap_table() const {
     const int words = (n[0] + 63) / 64;
     const int rows = n[1] * n[2];
     std::vector<uint64_t> bits(static_cast<size_t>(rows) * words, 0);
-    const int threads = core::resolve_threads(0);
+    const int threads = core::resolve_threads(requested_threads);
     core::parallel_for(rows, threads, [&](int begin, int end, int) {
         for (int r = begin; r < end; ++r) {
             const int j = r % n[1], k = r / n[1];
@@ -80,7 +84,7 @@ void DomainShape::build_overlap_table() const {
 }
 
 double DomainShape::translated_overlap(const Vec3& d) const {
-    std::call_once(overlap_once_, [this] { build_overlap_table(); });
+    prepare_overlap(0);  // all threads unless a method prepared it with its own count
     const OverlapTable& t = overlap_;
     int m[3], base[3];
     double frac[3];

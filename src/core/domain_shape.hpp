@@ -27,6 +27,8 @@ public:
     // |W ∩ (W + d)|, interpolated in a table of the set covariance of a rasterization
     // of the shape (domain_overlap.cpp), built on first use.
     double translated_overlap(const Vec3& d) const;
+    // Builds that table now with `threads` workers, unless it is built already.
+    void prepare_overlap(int threads) const;
 
     int dimension = 2;
     Box bounds;
@@ -40,7 +42,7 @@ private:
         int half[3] = {0, 0, 0};  // table index m in [-half, half] per axis
         std::vector<double> values;  // measure |W ∩ (W + m * stride * cell)|
     };
-    void build_overlap_table() const;
+    void build_overlap_table(int threads) const;
     mutable std::once_flag overlap_once_;
     mutable OverlapTable overlap_;
 };

@@ -1,11 +1,19 @@
 #include "core/parallel.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <thread>
 #include <vector>
 
 namespace tessera::core {
+
+namespace {
+std::atomic<int> widest{0};
+}  // namespace
+
+int widest_parallel_for() { return widest.load(); }
+void reset_widest_parallel_for() { widest.store(0); }
 
 int resolve_threads(int requested) {
     if (requested > 0) return requested;
@@ -16,6 +24,8 @@ int resolve_threads(int requested) {
 void parallel_for(int n, int threads, const std::function<void(int, int, int)>& body) {
     if (n <= 0) return;
     threads = std::max(1, std::min(threads, n));
+    for (int seen = widest.load(); threads > seen && !widest.compare_exchange_weak(seen, threads);) {
+    }
     if (threads == 1) {
         body(0, n, 0);
         return;

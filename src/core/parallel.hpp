@@ -17,4 +17,9 @@ int resolve_threads(int requested);
 // Exceptions thrown by a body are rethrown in the caller (the first by chunk order).
 void parallel_for(int n, int threads, const std::function<void(int begin, int end, int thread)>& body);
 
+// The most threads any parallel_for ran with since the last reset: a diagnostic that lets
+// tests check that a method keeps to its `threads` option (the only state here, atomic).
+int widest_parallel_for();
+void reset_widest_parallel_for();
+
 }  // namespace tessera::core

@@ -160,7 +160,7 @@ void PatchCopier::choose_patch() {
         patch = 2.0 * params_.radius;
         if (!params_.field.active() && !layer_.any) {
             const double limit = std::min(0.25 * min_extent, 12.0 * params_.spacing);
-            if (limit > params_.radius) structure_ = structure_range(ex_, params_.spacing, limit);
+            if (limit > params_.radius) structure_ = structure_range(ex_, params_.spacing, limit, options_.threads);
             patch = std::max(patch, 2.0 * structure_);
         }
         patch = std::min(patch, 0.5 * min_extent);

@@ -208,6 +208,7 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
     std::vector<long> count(types_, 0);
     for (const Element& e : out.elements) ++count[e.type];
     const std::vector<double> f = sum_to_g(count, types_, bins_, step_, dim, domain.measure());
+    domain.prepare_overlap(threads);
     const PairSums sums(bins_, step_, bandwidth_, &domain);
     const double reach = r_max_ + kKernelReach * bandwidth_, reach2 = reach * reach;
     std::vector<Vec3> p = element_centroids(out.elements, dim);

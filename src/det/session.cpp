@@ -95,7 +95,10 @@ DetSession::Impl::Impl(const Exemplar& ex, const DetOptions& o)
 }
 
 void DetSession::Impl::report(const char* stage, int index_in_stage, int count, double energy) const {
-    core::report(progress, {stage, index_in_stage, count, energy, seconds_since(t0)});
+    const double local = count > 0 && index_in_stage >= 0 ? std::min(1.0, (index_in_stage + 1.0) / count) : 0.0;
+    // Never backwards: a stage's start (index -1) within a span reports what is done so far.
+    last_fraction = std::max(last_fraction, span_lo + (span_hi - span_lo) * local);
+    core::report(progress, {stage, index_in_stage, count, energy, seconds_since(t0), last_fraction});
 }
 
 double DetSession::Impl::iterate_once(bool whole) {

@@ -39,6 +39,10 @@ struct DetSession::Impl {
     bool physics_measured = false;
 
     Progress progress;
+    // The share of the caller's whole run that the current call spans: a stage's own
+    // fraction maps into it (synthesize_det sets it per phase; a lone call spans 0 to 1).
+    double span_lo = 0.0, span_hi = 1.0;
+    mutable double last_fraction = 0.0;
     std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
 
     // Sends a progress event (Cancelled if the callback says stop).

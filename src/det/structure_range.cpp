@@ -40,7 +40,7 @@ double structured_stretch(const PcfResult& pcf, const std::vector<double>& g, do
 
 }  // namespace
 
-double structure_range(const Exemplar& exemplar, double spacing, double r_limit) {
+double structure_range(const Exemplar& exemplar, double spacing, double r_limit, int threads) {
     const size_t n = exemplar.elements.size();
     if (n < 3 || !(r_limit > 0.0) || !(spacing > 0.0)) return 0.0;
     const double measure = exemplar.domain.measure();
@@ -66,6 +66,7 @@ double structure_range(const Exemplar& exemplar, double spacing, double r_limit)
     options.r_max = r_limit;
     options.bins = bins;
     options.bandwidth = std::max(0.25 * spacing, r_limit / 50.0);
+    options.threads = threads;
 
     // A structured stretch ends after two spacings (or a tenth of the range examined)
     // without structure: longer than the gaps between a lattice's peaks.

@@ -17,6 +17,7 @@ namespace tessera::det {
 // sqrt(|W| / (S(r) n_a n_b h sqrt(pi))) (S(r) = 2 pi r or 4 pi r^2), times 3, and at
 // least 0.1. Returns 0 for a Poisson-like pattern, about r_limit for a lattice.
 // `spacing` is the mean nearest-neighbour distance.
-double structure_range(const Exemplar& exemplar, double spacing, double r_limit);
+// `threads`: workers of the pair correlation estimate (0 = all).
+double structure_range(const Exemplar& exemplar, double spacing, double r_limit, int threads);
 
 }  // namespace tessera::det

@@ -84,7 +84,7 @@ std::vector<CrowdingPair> crowding(const Exemplar& exemplar, const Exemplar& out
     return result;
 }
 
-EmptyCircle largest_empty_circle(const Exemplar& data) {
+EmptyCircle largest_empty_circle(const Exemplar& data, int threads) {
     metrics::check_points(data, "largest empty circle");
     std::vector<Vec3> p;
     std::vector<double> rim;  // per sample: the radius of its element
@@ -97,7 +97,7 @@ EmptyCircle largest_empty_circle(const Exemplar& data) {
     if (p.empty()) return {};
     // A lattice of a fifth of the typical spacing in 2D, a third in 3D, refined by a pattern search.
     const double step = metrics::typical_spacing(p, data.dimension) / (data.dimension == 2 ? 5.0 : 3.0);
-    const core::EmptyBall ball = core::largest_empty_ball(p, rim, data.domain, data.dimension, step, 0);
+    const core::EmptyBall ball = core::largest_empty_ball(p, rim, data.domain, data.dimension, step, threads);
     return {ball.radius, ball.center};
 }
 

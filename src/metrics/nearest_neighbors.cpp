@@ -13,7 +13,7 @@
 
 namespace tessera {
 
-NearestNeighborStats nearest_neighbor_distances(const Exemplar& points) {
+NearestNeighborStats nearest_neighbor_distances(const Exemplar& points, int threads) {
     metrics::check_points(points, "nearest-neighbour distances");
     const std::vector<Vec3> p = metrics::element_positions(points);
     const int n = static_cast<int>(p.size());
@@ -26,7 +26,7 @@ NearestNeighborStats nearest_neighbor_distances(const Exemplar& points) {
     core::SpatialGrid grid;
     grid.build(p, metrics::grid_cell(p, metrics::typical_spacing(p, points.dimension)), points.dimension);
     const double max_radius = metrics::bounding_diagonal(p) * 1.001 + 1e-300;
-    core::parallel_for(n, core::resolve_threads(0), [&](int begin, int end, int) {
+    core::parallel_for(n, core::resolve_threads(threads), [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i) {
             const int j = grid.nearest(p[i], max_radius, [i](int k) { return k != i; });
             // j >= 0 always: max_radius spans all points (z is 0 in 2D).

@@ -34,6 +34,7 @@ constexpr double kernel_reach = 5.0;  // kernel truncated at 5 standard deviatio
 struct ResolvedOptions {
     double r_max = 0.0, bandwidth = 0.0;
     int bins = default_bins;
+    int threads = 0;
 };
 
 std::string number(double v) {
@@ -57,9 +58,10 @@ ResolvedOptions resolve_options(const Exemplar& points, const PcfOptions& option
                                            std::to_string(options.bins));
     ResolvedOptions r;
     r.bins = options.bins == 0 ? default_bins : options.bins;
+    r.threads = options.threads;
     r.r_max = options.r_max;
     if (r.r_max == 0.0) {
-        const double nn = points.elements.size() >= 2 ? nearest_neighbor_distances(points).mean : 0.0;
+        const double nn = points.elements.size() >= 2 ? nearest_neighbor_distances(points, options.threads).mean : 0.0;
         if (nn > 0.0) {
             r.r_max = 5.0 * nn;
         } else {
@@ -115,6 +117,7 @@ PcfResult pair_correlation(const Exemplar& points, const PcfOptions& options) {
     const double h = opt.bandwidth;
     const double dr = opt.r_max / (bins - 1);
     const Domain& domain = points.domain;
+    domain.prepare_overlap(opt.threads);
 
     const std::vector<Vec3> p = metrics::element_positions(points);
     const int n = static_cast<int>(p.size());
@@ -133,7 +136,7 @@ PcfResult pair_correlation(const Exemplar& points, const PcfOptions& options) {
     const double cutoff = opt.r_max + kernel_reach * h;
     core::SpatialGrid grid;
     grid.build(p, metrics::grid_cell(p, 0.5 * cutoff), dim);  // half-size cells: 5^d cells of 1/2^d volume scan fewer candidates
-    core::parallel_for(blocks, core::resolve_threads(0), [&](int block_begin, int block_end, int) {
+    core::parallel_for(blocks, core::resolve_threads(opt.threads), [&](int block_begin, int block_end, int) {
         for (int block = block_begin; block < block_end; ++block) {
             double* acc = partial.data() + stride * block;
             const int begin = static_cast<int>(static_cast<long long>(n) * block / blocks);

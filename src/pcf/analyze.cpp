@@ -66,7 +66,7 @@ std::vector<PcfEnvelope> pcf_pairs(const std::vector<std::vector<int>>& parents,
 }  // namespace
 }  // namespace pcf
 
-PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSettings& settings) {
+PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSettings& settings, int threads) {
     pcf::check_analysis_settings(settings);
     const int classes = static_cast<int>(exemplar.types.size());
     std::vector<int> class_of_type(classes);
@@ -101,7 +101,7 @@ PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSetting
     model.x.resize(axis.bins);
     for (int k = 0; k < axis.bins; ++k) model.x[k] = axis.x(k);
     model.pcfs = pcf::estimate_pcfs(points, classes, exemplar.domain, model.area, model.r_max, axis,
-                                    pcf::pcf_pairs(model.parents, model.order));
+                                    pcf::pcf_pairs(model.parents, model.order), threads);
     // Class pairs without a PCF: their closest approach, up to the salient configurations.
     std::vector<std::pair<int, int>> unrelated;
     for (int a = 0; a < classes; ++a)

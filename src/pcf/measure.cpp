@@ -11,7 +11,7 @@
 
 namespace tessera {
 
-std::vector<PcfEnvelope> measure_distribution(const PcfModel& model, const Exemplar& data) {
+std::vector<PcfEnvelope> measure_distribution(const PcfModel& model, const Exemplar& data, int threads) {
     pcf::check_analysis_settings(model.settings);
     if (!(model.r_max > 0.0)) throw Error(ErrorKind::option, "PCF measure: the model's r_max must be > 0");
     const int classes = static_cast<int>(model.classes.size());
@@ -29,7 +29,7 @@ std::vector<PcfEnvelope> measure_distribution(const PcfModel& model, const Exemp
     const double area = data.domain.measure();
     if (!(area > 0.0)) throw Error(ErrorKind::domain, "PCF measure: the arrangement's domain has no area");
     return pcf::estimate_pcfs(points, classes, data.domain, area, model.r_max,
-                              pcf::make_axis(model.settings, model.disks), model.pcfs);
+                              pcf::make_axis(model.settings, model.disks), model.pcfs, threads);
 }
 
 PcfQuality compare_distribution(const PcfModel& model, const Exemplar& exemplar, const Exemplar& output) {

@@ -54,7 +54,8 @@ struct BlockResult {
 }  // namespace
 
 std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, const Domain& domain, double area,
-                                       double r_max, const Axis& axis, const std::vector<PcfEnvelope>& pairs) {
+                                       double r_max, const Axis& axis, const std::vector<PcfEnvelope>& pairs,
+                                       int threads) {
     const int n = static_cast<int>(points.p.size());
     const int bins = axis.bins;
     const int npairs = static_cast<int>(pairs.size());
@@ -82,7 +83,7 @@ std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, con
     // order: the same bits on any machine.
     const int blocks = std::clamp(n / 256 + 1, 1, 64);
     std::vector<BlockResult> results(blocks);
-    core::parallel_for(blocks, core::resolve_threads(0), [&](int block_begin, int block_end, int) {
+    core::parallel_for(blocks, core::resolve_threads(threads), [&](int block_begin, int block_end, int) {
         std::vector<double> acc(static_cast<size_t>(npairs) * bins), individual(bins);
         for (int block = block_begin; block < block_end; ++block) {
             BlockResult& r = results[block];

@@ -35,9 +35,10 @@ PcfPoints pcf_points(const Exemplar& data, const std::vector<int>& class_of_type
 // divide by the possible neighbours n_parent (n_child - 1 within a class), so the mean is
 // the average of the individual PCFs and lies inside the envelope. A child class without
 // elements gives zeros. `area` is |W| of `domain`. The result does not depend on the
-// number of threads (fixed blocks, reduced in order).
+// number of threads (fixed blocks, reduced in order; 0 = all).
 std::vector<PcfEnvelope> estimate_pcfs(const PcfPoints& points, int classes, const Domain& domain, double area,
-                                       double r_max, const Axis& axis, const std::vector<PcfEnvelope>& pairs);
+                                       double r_max, const Axis& axis, const std::vector<PcfEnvelope>& pairs,
+                                       int threads);
 
 // The closest approach on the normalised axis (pair_distance.hpp) between the elements of
 // each class pair of `pairs` (two different classes), at most `cap`: cap when no pair of

@@ -133,11 +133,11 @@ PassResult close_pass(const core::CrowdingBounds& bounds, const std::vector<int>
 
 }  // namespace
 
-void close_holes(const Exemplar& exemplar, const Domain& domain, const PcfSynthOptions&, Arrangement& out) {
+void close_holes(const Exemplar& exemplar, const Domain& domain, const PcfSynthOptions& options, Arrangement& out) {
     if (out.dimension != 2 || out.elements.size() < 2 || exemplar.elements.size() < 2) return;
     for (const Element& e : out.elements)
         if (e.sample_count != 1) return;  // the PCF method places single-sample disks
-    const double hole = kHoleTolerance * largest_empty_circle(exemplar).radius;
+    const double hole = kHoleTolerance * largest_empty_circle(exemplar, options.threads).radius;
     if (!(hole > 0.0)) return;
     const core::CrowdingBounds bounds(exemplar);
     std::vector<int> to_exemplar(out.types.size());

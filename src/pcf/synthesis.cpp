@@ -206,6 +206,12 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     const int outlier_sweeps = options.max_iterations > 0 ? std::max(1, options.max_iterations / 4) : 0;
     const int planned = (options.max_iterations + options.outlier_rounds * outlier_sweeps) * classes;
     int sweep_index = 0;
+    // The progress fraction: classes done, and the current class's sweeps of its most.
+    int classes_done = 0, class_sweeps = 0;
+    const auto share_done = [&] {
+        const double current = std::min(1.0, class_sweeps / std::max(1.0, 1.0 * options.max_iterations));
+        return 0.97 * (classes_done + current) / std::max(1, classes);
+    };
     double init_seconds = 0.0;
     auto sweep_start = Clock::now();
     // Placements report at most every kTickSeconds (a grid search takes up to ~50 ms).
@@ -213,12 +219,13 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     const auto tick = [&] {
         if (seconds_since(last_tick) < kTickSeconds) return;
         last_tick = Clock::now();
-        report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
+        report(progress, {"init", -1, planned, 0.0, seconds_since(t0), share_done()});
     };
     const auto on_sweep = [&](double energy) {
         stats.energy.push_back(energy);
         stats.iteration_seconds.push_back(seconds_since(sweep_start));
-        report(progress, {"iteration", sweep_index++, planned, energy, seconds_since(t0)});
+        ++sweep_index, ++class_sweeps;
+        report(progress, {"iteration", sweep_index - 1, planned, energy, seconds_since(t0), share_done()});
         sweep_start = Clock::now();
     };
     const auto run_init = [&](int c, const std::vector<int>& elements, int round) {
@@ -259,10 +266,12 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     };
 
     for (int c : model.order) {
-        report(progress, {"init", -1, planned, 0.0, seconds_since(t0)});
+        class_sweeps = 0;
+        report(progress, {"init", -1, planned, 0.0, seconds_since(t0), share_done()});
         const std::vector<int>& members = state.members[c];
         if (const PcfSparseClass* sparse = pcf::sparse_class(model, c)) {
             run_sparse(*sparse, members);
+            ++classes_done;
             continue;
         }
         run_init(c, members, 0);
@@ -328,6 +337,7 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
             stats.solver_bound_hits += bound_hit;
             stats.notes.push_back(what + " (PCF error " + format(before) + " -> " + format(after) + ")");
         }
+        ++classes_done;
     }
     stats.init_seconds = init_seconds;
 
@@ -353,7 +363,7 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
         for (int t : ts) final_energy += state.term_error(t);
     stats.final_energy = final_energy;
     stats.total_seconds = seconds_since(t0);
-    report(progress, {"done", sweep_index, planned, final_energy, stats.total_seconds});
+    report(progress, {"done", sweep_index, planned, final_energy, stats.total_seconds, 1.0});
     return out;
 }
 

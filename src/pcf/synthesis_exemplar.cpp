@@ -13,7 +13,7 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
                            const Progress& progress) {
     const auto t0 = core::Clock::now();
     core::report(progress, {"analysis", -1, 0, 0.0, 0.0});
-    const PcfModel model = analyze_distribution(exemplar, options.analysis);
+    const PcfModel model = analyze_distribution(exemplar, options.analysis, options.threads);
     // The model's synthesis reports its stages; its "done" waits for the repair.
     ProgressEvent done;
     const Progress inner = [&](const ProgressEvent& e) {
@@ -21,7 +21,9 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
             done = e;
             return true;
         }
-        return !progress || progress(e);
+        ProgressEvent scaled = e;  // the model's synthesis is 5% to 90% of this run
+        scaled.fraction = 0.05 + 0.85 * e.fraction;
+        return !progress || progress(scaled);
     };
     Arrangement out = synthesize_pcf(model, domain, options, progress ? inner : Progress{});
     for (ElementType& type : out.types) {
@@ -31,12 +33,13 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
         type = exemplar.types[t];
         type.depends_on = depends_on;
     }
-    core::report(progress, {"repair", -1, 0, 0.0, core::seconds_since(t0)});
+    core::report(progress, {"repair", -1, 0, 0.0, core::seconds_since(t0), 0.9});
     pcf::relax_output(exemplar, domain, options, out);
     pcf::close_holes(exemplar, domain, options, out);
     pcf::repair_output(exemplar, domain, options, out);
     out.stats.total_seconds = core::seconds_since(t0);
     done.elapsed_s = out.stats.total_seconds;
+    done.fraction = 1.0;
     core::report(progress, done);
     return out;
 }

@@ -7,6 +7,7 @@
 
 #include <map>
 
+#include "core/parallel.hpp"
 #include "quality_data.hpp"
 #include "tessera/det_session.hpp"
 #include "tessera/error.hpp"
@@ -146,5 +147,27 @@ TEST(DetSession, SynthesizeDetIsInitializeIterateFinish) {
     for (size_t i = 0; i < held.samples.size(); ++i) {
         EXPECT_EQ(one_shot.samples[i].p.x, held.samples[i].p.x);
         EXPECT_EQ(one_shot.samples[i].p.y, held.samples[i].p.y);
+    }
+}
+
+TEST(DetSession, EveryParallelLoopKeepsToTheThreadsOption) {
+    // A polygon domain reaches the translated-overlap table of the pair relaxation; the
+    // two-class field data reach the structure range's pair correlation.
+    const Exemplar ex = test::field_pattern("amacrine");
+    const Box b = ex.domain.bounds();
+    const Vec3 s = b.size();
+    const Domain polygon = Domain::polygon({b.lo, b.lo + Vec3{2 * s.x, 0, 0}, b.lo + Vec3{2 * s.x, 2 * s.y, 0},
+                                            b.lo + Vec3{s.x, 1.2 * s.y, 0}, b.lo + Vec3{0, 2 * s.y, 0}});
+    for (int threads : {1, 2}) {
+        DetOptions o;
+        o.threads = threads;
+        core::reset_widest_parallel_for();
+        synthesize_det(ex, polygon, o);
+        EXPECT_EQ(core::widest_parallel_for(), threads);
+        PcfSynthOptions p;
+        p.threads = threads;
+        core::reset_widest_parallel_for();
+        synthesize_pcf(ex, polygon, p);
+        EXPECT_LE(core::widest_parallel_for(), threads);
     }
 }

@@ -64,7 +64,7 @@ TEST(StructureRange, RandomPointsHaveNoneBeyondANeighbourhood) {
         const Exemplar ex = uniform_points(1500, seed);
         const double d = spacing_of(ex);
         // At most the default neighbourhood radius (2 spacings): the paper's patch stays.
-        EXPECT_LE(det::structure_range(ex, d, 12.0 * d), 2.0 * d) << "seed " << seed;
+        EXPECT_LE(det::structure_range(ex, d, 12.0 * d, 2), 2.0 * d) << "seed " << seed;
     }
 }
 
@@ -74,7 +74,7 @@ TEST(StructureRange, ClustersAreFoundAtTheirSize) {
     const double sigma = 0.01;
     const Exemplar ex = thomas_points(100, 8, sigma, 4);
     const double d = spacing_of(ex);
-    const double range = det::structure_range(ex, d, 0.25);
+    const double range = det::structure_range(ex, d, 0.25, 2);
     // Cluster members lie within ~2 sigma of the centre, pairs within ~4-6 sigma.
     EXPECT_GE(range, 3.0 * sigma);
     EXPECT_LE(range, 9.0 * sigma);
@@ -88,7 +88,7 @@ TEST(StructureRange, ALatticeIsStructuredAllTheWay) {
         for (int i = 0; i * a < 1.0; ++i)
             ex.add_element(0, {Vec3{i * a + (j % 2) * a / 2.0 + 0.01, j * a * std::sqrt(3.0) / 2.0 + 0.01, 0}});
     const double limit = 0.25;
-    EXPECT_GE(det::structure_range(ex, spacing_of(ex), limit), 0.9 * limit);
+    EXPECT_GE(det::structure_range(ex, spacing_of(ex), limit, 2), 0.9 * limit);
 }
 
 TEST(StructureRange, ClassesSegregatedAtLongRangeCount) {
@@ -98,7 +98,7 @@ TEST(StructureRange, ClassesSegregatedAtLongRangeCount) {
     ex.type_index("other");
     for (Element& e : ex.elements) e.type = e.position.x < 0.5 ? 0 : 1;
     const double d = spacing_of(ex);
-    EXPECT_GT(det::structure_range(ex, d, 12.0 * d), 2.0 * d);
+    EXPECT_GT(det::structure_range(ex, d, 12.0 * d, 2), 2.0 * d);
 }
 
 TEST(DetSynthesis, ClusteredFieldDataKeepTheirClustersAtFourTimesTheArea) {
