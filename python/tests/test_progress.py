@@ -12,7 +12,9 @@ def test_progress_is_called_for_every_iteration(two_class):
     events = []
     tessera.synthesize(two_class, iterations=3, progress=events.append)
     iterations = [e for e in events if e["stage"] == "iteration"]
-    assert [e["iteration"] for e in iterations] == [0, 1, 2]
+    # A long step re-sends its last event now and then; the steps are the distinct ones.
+    steps = [e["iteration"] for k, e in enumerate(iterations) if k == 0 or e["iteration"] != iterations[k - 1]["iteration"]]
+    assert steps == [0, 1, 2]
     assert all(e["iterations"] == 3 and e["elapsed"] >= 0 for e in iterations)
 
 
@@ -91,7 +93,7 @@ def test_every_event_of_the_run_reaches_the_callback(two_class):
     tessera.synthesize(two_class, iterations=2, progress=events.append)
     stages = [e["stage"] for e in events]
     assert stages[0] == "init" and stages[-1] == "done"
-    assert stages.count("iteration") == 2
+    assert sorted({e["iteration"] for e in events if e["stage"] == "iteration"}) == [0, 1]
     assert all(set(e) == {"stage", "iteration", "iterations", "energy", "elapsed", "fraction"} for e in events)
     assert [e["elapsed"] for e in events] == sorted(e["elapsed"] for e in events)
 

@@ -91,6 +91,7 @@ double search_step(OutputState& state, const InputIndex& index, const Domain& do
     core::parallel_for(n, threads, [&](int begin, int end, int t) {
         Scratch& s = scratch[t];
         for (int so = begin; so < end; ++so) {
+            if ((so & 63) == 0) core::check(settings.interrupt, t);
             gather_neighbors(grid, positions, positions[so], so, params.radius, params.dimension, state.key, type,
                              element, radius, s.out_nb, s.sort_buf, max_neighbors);
             // Eq. 7: relative positions are measured in the local frame of the centre.

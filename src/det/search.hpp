@@ -2,6 +2,7 @@
 // neighbourhood is most similar under Eq. 1 plus the occupancy term lambda * Eq. 6.
 #pragma once
 
+#include "core/interrupt.hpp"
 #include "det/model.hpp"
 
 namespace tessera::det {
@@ -9,6 +10,7 @@ namespace tessera::det {
 struct SearchSettings {
     SearchMode mode = SearchMode::kcoherence;
     int threads = 1;
+    const core::Interrupt* interrupt = nullptr;  // checked every 64 output samples
 };
 
 // Fills state.match, state.cost and state.pairs; returns the energy E of Eq. 2

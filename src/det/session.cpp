@@ -82,7 +82,7 @@ DetSession::Impl::Impl(const Exemplar& ex, const DetOptions& o)
     vacancies.count_allowance = kCountAllowance;
     vacancies.must_fill_radius = hole_radius * kHoleBound / kHoleTolerance;
     vacancies.seed = options.seed;
-    search = det::SearchSettings{options.search, threads};
+    search = det::SearchSettings{options.search, threads, &interrupt};
     state.arrangement.dimension = exemplar.dimension;
     state.arrangement.types = exemplar.types;
     state.arrangement.attribute_names = exemplar.attribute_names;
@@ -94,11 +94,18 @@ DetSession::Impl::Impl(const Exemplar& ex, const DetOptions& o)
     stats.radius = params.radius;
 }
 
-void DetSession::Impl::report(const char* stage, int index_in_stage, int count, double energy) const {
+void DetSession::Impl::report(const char* stage, int index_in_stage, int count, double energy) {
     const double local = count > 0 && index_in_stage >= 0 ? std::min(1.0, (index_in_stage + 1.0) / count) : 0.0;
     // Never backwards: a stage's start (index -1) within a span reports what is done so far.
     last_fraction = std::max(last_fraction, span_lo + (span_hi - span_lo) * local);
-    core::report(progress, {stage, index_in_stage, count, energy, seconds_since(t0), last_fraction});
+    last_event = {stage, index_in_stage, count, energy, seconds_since(t0), last_fraction};
+    core::report(progress, last_event);
+}
+
+void DetSession::Impl::resend_last_event() {
+    if (!progress || last_event.stage.empty()) return;
+    last_event.elapsed_s = seconds_since(t0);
+    core::report(progress, last_event);
 }
 
 double DetSession::Impl::iterate_once(bool whole) {
@@ -162,6 +169,7 @@ double DetSession::radius() const { return impl_->params.radius; }
 
 int DetSession::initialize(const Domain& region) {
     Impl& s = *impl_;
+    s.interrupt.rearm();
     const bool empty = s.state.arrangement.elements.empty();
     if (empty || !s.has_domain) set_domain(region);
     else if (region.dimension() != s.exemplar.dimension)
@@ -203,6 +211,7 @@ int DetSession::initialize(const Domain& region) {
 
 double DetSession::iterate(int iterations) {
     Impl& s = *impl_;
+    s.interrupt.rearm();
     if (iterations < 0) throw Error(ErrorKind::option, "iterations must be >= 0, got " + std::to_string(iterations));
     double energy = 0.0;
     try {
@@ -220,6 +229,7 @@ double DetSession::iterate(int iterations) {
 
 double DetSession::iterate(const Domain& region, int iterations) {
     Impl& s = *impl_;
+    s.interrupt.rearm();
     if (iterations < 0) throw Error(ErrorKind::option, "iterations must be >= 0, got " + std::to_string(iterations));
     if (region.dimension() != s.exemplar.dimension)
         throw Error(ErrorKind::domain, "the region is " + std::to_string(region.dimension()) + "D but the exemplar is " +
@@ -227,6 +237,9 @@ double DetSession::iterate(const Domain& region, int iterations) {
     return det::iterate_region(s, region, iterations);
 }
 
-void DetSession::finish() { det::finish(*impl_); }
+void DetSession::finish() {
+    impl_->interrupt.rearm();
+    det::finish(*impl_);
+}
 
 }  // namespace tessera

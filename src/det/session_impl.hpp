@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/crowding_repair.hpp"
+#include "core/interrupt.hpp"
 #include "det/input_index.hpp"
 #include "det/model.hpp"
 #include "det/physics_guard.hpp"
@@ -39,14 +40,17 @@ struct DetSession::Impl {
     bool physics_measured = false;
 
     Progress progress;
+    ProgressEvent last_event;  // re-sent by `interrupt` during a long step
+    core::Interrupt interrupt{[this] { resend_last_event(); }};
     // The share of the caller's whole run that the current call spans: a stage's own
     // fraction maps into it (synthesize_det sets it per phase; a lone call spans 0 to 1).
     double span_lo = 0.0, span_hi = 1.0;
-    mutable double last_fraction = 0.0;
+    double last_fraction = 0.0;
     std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
 
     // Sends a progress event (Cancelled if the callback says stop).
-    void report(const char* stage, int index, int count, double energy = 0.0) const;
+    void report(const char* stage, int index, int count, double energy = 0.0);
+    void resend_last_event();
     // One search + assignment iteration over the held arrangement, with its sub-steps. A
     // region's sub-problem (whole = false) has no physics step and fills no holes: its
     // domain reaches beyond its elements.

@@ -171,3 +171,24 @@ TEST(DetSession, EveryParallelLoopKeepsToTheThreadsOption) {
         EXPECT_LE(core::widest_parallel_for(), threads);
     }
 }
+
+TEST(DetSession, ACancelReachesIntoALongSearch) {
+    // A long step re-sends its last event about every 50 ms; answering a repeat with false
+    // stops the run there, inside the search, before that iteration's end.
+    const Exemplar ex = test::example("poisson_disk_2d");
+    DetOptions o;
+    o.iterations = 3;
+    o.threads = 2;
+    std::vector<ProgressEvent> events;
+    const Progress progress = [&](const ProgressEvent& e) {
+        const bool repeat = !events.empty() && events.back().stage == e.stage &&
+                            events.back().iteration == e.iteration && e.stage == "iteration";
+        events.push_back(e);
+        return !repeat;
+    };
+    EXPECT_THROW(synthesize_det(ex, ex.domain.scaled(10.0), o, progress), Cancelled);  // ~44,000 disks
+    int last_iteration = -1;
+    for (const ProgressEvent& e : events)
+        if (e.stage == "iteration") last_iteration = std::max(last_iteration, e.iteration);
+    EXPECT_LT(last_iteration, o.iterations - 1) << "the cancel waited for the end of the run";
+}
