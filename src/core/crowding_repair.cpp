@@ -270,6 +270,7 @@ CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const
     if (data.dimension == 2)
         for (Element& e : data.elements) e.position.z = 0.0;
     for (int round = 0; round < o.rounds; ++round) {
+        check(o.interrupt, 0);  // the caller's thread, between rounds
         const std::vector<LevelViolations> all = all_violations(data, bounds, o);
         report.remaining = count_of(all);
         if (report.remaining == 0) return report;

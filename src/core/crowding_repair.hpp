@@ -24,6 +24,7 @@
 
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "tessera/domain.hpp"
 #include "tessera/exemplar.hpp"
 
@@ -82,6 +83,7 @@ struct CrowdingRepairOptions {
     // elevation): per element, non-zero = held; empty = none. Their moves keep to the plane.
     std::vector<char> held_level;
     Vec3 level_axis{0, 1, 0};
+    const Interrupt* interrupt = nullptr;  // checked before every round (a cancel)
 };
 
 struct CrowdingRepairReport {

@@ -32,6 +32,7 @@ void hold_floor_levels(core::CrowdingRepairOptions& repair, const Arrangement& o
 core::CrowdingRepairOptions repair_options(const DetSession::Impl& s) {
     core::CrowdingRepairOptions repair;
     repair.threads = s.threads;
+    repair.interrupt = &s.interrupt;
     return repair;
 }
 

@@ -82,6 +82,14 @@ double exemplar_hole_radius(const Exemplar& exemplar, double spacing, double rad
 
 namespace {
 
+// A key of the world lattice cell of side `step` that holds p.
+std::uint64_t world_cell_key(const Vec3& p, double step) {
+    std::uint64_t key = 0x9e3779b97f4a7c15ULL;
+    for (int k = 0; k < 3; ++k)
+        key = core::mix64(key ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(p[k] / step))));
+    return key;
+}
+
 // Constrained selection (section 5) for the elements holes receive: a copy of an exemplar
 // floor element goes down or up to the source's own height above its floor (the assignment
 // then holds that elevation, det/assign.cpp), and only where a floor is that near.
@@ -193,11 +201,14 @@ VacancyReport fill_vacancies(Provenance into, const Exemplar& exemplar, const Do
         if (of_type[type].empty()) continue;
         const bool over = static_cast<double>(count[type]) >= static_cast<double>(target[type]) * (1.0 + settings.count_allowance);
         if (over && !short_of_count && depth <= settings.must_fill_radius) continue;
-        // A keyed random element of the type, keyed by the hole's place, turned by the field.
+        // A keyed random element of the type, keyed by the hole's place in the world (its
+        // centre on a lattice of the candidates' step anchored at the origin, not an index
+        // into this domain's lattice), turned by the field.
         const Quat frame = params.field.frame(c, dim);
+        const std::uint64_t place = world_cell_key(c, step);
         int added = -1;
         for (int attempt = 0; attempt < kCopiesTried && added < 0; ++attempt) {
-            const std::uint64_t key = static_cast<std::uint64_t>(-negative) * kCopiesTried + attempt;
+            const std::uint64_t key = place * kCopiesTried + static_cast<std::uint64_t>(attempt);
             const int source = of_type[type][rng.below(key, of_type[type].size())];
             const Element& src = exemplar.elements[source];
             Vec3 at = c;
