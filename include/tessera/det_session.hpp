@@ -79,7 +79,7 @@ public:
     // The resolved neighbourhood radius (DetOptions::radius or the automatic one).
     double radius() const;
 
-    struct Impl;  // src/det/session_impl.hpp; public so that growth (src/grow) can reach it
+    struct Impl;  // src/det/session_state.hpp; public so that growth (src/grow) can reach it
     Impl& impl() { return *impl_; }
 
 private:

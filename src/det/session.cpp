@@ -10,7 +10,7 @@
 #include "core/run_clock.hpp"
 #include "det/assign.hpp"
 #include "det/init.hpp"
-#include "det/session_impl.hpp"
+#include "det/session_state.hpp"
 #include "det/session_region.hpp"
 #include "det/session_steps.hpp"
 #include "det/type_exchange.hpp"

@@ -6,7 +6,7 @@
 // not what the whole arrangement holds.
 #pragma once
 
-#include "det/session_impl.hpp"
+#include "det/session_state.hpp"
 
 namespace tessera::det {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "det/init.hpp"
-#include "det/session_impl.hpp"
+#include "det/session_state.hpp"
 
 namespace tessera::det {
 

@@ -2,7 +2,7 @@
 // iterate search and assignment, then the final passes; a one-shot call on DetSession
 // (include/tessera/det_session.hpp, src/det/session.cpp), which holds the steps.
 #include "core/run_clock.hpp"
-#include "det/session_impl.hpp"
+#include "det/session_state.hpp"
 #include "det/session_steps.hpp"
 #include "tessera/det.hpp"
 #include "tessera/det_session.hpp"
