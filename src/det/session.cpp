@@ -2,9 +2,9 @@
 // between calls. Pseudocode 1 of the paper is initialize() then iterate(); the sub-steps
 // after every iteration keep the exemplar's bounds of crowding and holes, like the
 // interleaved physics of section 5.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "core/parallel.hpp"
 #include "core/run_clock.hpp"

@@ -111,10 +111,8 @@ TEST(DetSynthesis, TheSameSeedDrawsTheSameWindowsAtTheSamePlaceInAnyDomain) {
     o.relax_sweeps = 0;
     o.patch_size = 4.0;
     o.patch_candidates = 1;
-    const Box b = ex.domain.bounds();
     const Arrangement small = synthesize_det(ex, Domain::box({0, 0, 0}, {8, 8, 0}, 2), o);
     const Arrangement large = synthesize_det(ex, Domain::box({0, 0, 0}, {32, 32, 0}, 2), o);
-    (void)b;
     int inner = 0, same = 0;
     for (const Element& e : small.elements) {
         if (e.position.x < 0.5 || e.position.x > 3.5 || e.position.y < 0.5 || e.position.y > 3.5) continue;
