@@ -8,7 +8,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -16,9 +15,8 @@
 #include <string>
 #include <vector>
 
-#include <time.h>
-
 #include "common.hpp"
+#include "interrupt_scope.hpp"
 #include "status_printer.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -26,45 +24,6 @@
 namespace tessera_cli {
 namespace {
 
-// Set by SIGINT; the progress callback then asks the library to stop at the next
-// iteration boundary. A second Ctrl-C kills the process the usual way, but only when it
-// comes at least 0.2 s after the first: `timeout -s INT` and scripts that signal both a
-// child and its process group deliver one interrupt twice within microseconds, and that
-// must still end cleanly. (clock_gettime is async-signal-safe; std::chrono is not
-// guaranteed to be.)
-volatile std::sig_atomic_t interrupted = 0;
-volatile std::sig_atomic_t first_interrupt_ms = 0;
-
-long monotonic_ms() {
-    timespec now{};
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return static_cast<long>(now.tv_sec % 1000000) * 1000 + now.tv_nsec / 1000000;
-}
-
-extern "C" void on_interrupt(int) {
-    const long now = monotonic_ms();
-    if (interrupted == 0) {
-        interrupted = 1;
-        first_interrupt_ms = static_cast<std::sig_atomic_t>(now);
-        return;
-    }
-    if (now - first_interrupt_ms < 200) return;  // the same interrupt delivered twice
-    std::signal(SIGINT, SIG_DFL);
-    std::raise(SIGINT);
-}
-
-// Catches SIGINT from the start of the command (loading an input or voxelizing a mesh
-// domain can take a while) until the synthesis returns; the first progress call after an
-// interrupt then cancels the run. Restores the default on every way out.
-struct InterruptScope {
-    InterruptScope() {
-        interrupted = 0;
-        std::signal(SIGINT, on_interrupt);
-    }
-    ~InterruptScope() { std::signal(SIGINT, SIG_DFL); }
-    InterruptScope(const InterruptScope&) = delete;
-    InterruptScope& operator=(const InterruptScope&) = delete;
-};
 
 struct SynthArgs {
     std::string input, output, preview, input_domain, domain, field, gravity, boundary, meshes = "auto";
@@ -193,7 +152,7 @@ void run_synth(SynthArgs& args) {
     }
 
     tessera::Arrangement result;
-    const auto keep_going = [] { return interrupted == 0; };
+    const auto keep_going = [] { return !interrupt_requested(); };
     try {
         if (pcf)
             result = tessera::synthesize_pcf(exemplar, domain, args.pcf, status.progress(keep_going, "sweep"));

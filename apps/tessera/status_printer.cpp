@@ -32,6 +32,11 @@ std::string StatusPrinter::format(const tessera::ProgressEvent& event, const std
                       event.iteration + 1, event.iterations, event.energy, event.elapsed_s);
         return line;
     }
+    if (event.stage == "round" && event.iteration >= 0) {  // growth: the rounds are not planned ahead
+        std::snprintf(line, sizeof line, "round %d  energy %.4g  about %d%% done  elapsed %.2f s", event.iteration + 1,
+                      event.energy, static_cast<int>(100.0 * event.fraction), event.elapsed_s);
+        return line;
+    }
     // Any other stage: its fraction done when the event has one (a 0-based step index).
     const std::string stage = event.stage.empty() ? "working" : event.stage;
     if (event.iterations > 0 && event.iteration >= 0) {

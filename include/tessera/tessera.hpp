@@ -9,6 +9,7 @@
 #include "tessera/exemplar.hpp"
 #include "tessera/field.hpp"
 #include "tessera/geometry.hpp"
+#include "tessera/grow.hpp"
 #include "tessera/io.hpp"
 #include "tessera/mesh.hpp"
 #include "tessera/metrics.hpp"

@@ -25,6 +25,8 @@ enum class Purpose : std::uint64_t {
     pcf_dart = 5,   // PCF synthesis: dart-throwing positions
     pcf_grid = 6,   // PCF synthesis: grid-search jitter
     pcf_radii = 7,  // PCF synthesis: radii drawn to make up a shortfall
+    grow_seed = 8,      // growth: where in the exemplar the seed patch is taken
+    grow_playout = 9,   // growth: the tree search's random play-outs
     test = 99
 };
 

@@ -1,0 +1,320 @@
+// Candidate generation and filters for growth (grow/generate.hpp).
+#include "grow/generate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.hpp"
+#include "grow/neighborhood.hpp"
+
+namespace tessera::grow {
+
+namespace {
+
+// Candidates whose centre lies at most this share of the spacing outside the region are
+// moved onto its boundary instead of being discarded.
+constexpr double kBoundaryPull = 0.5;
+
+// The input entries of `e`'s patch paired with an output element within c (position only:
+// a pair of different types still occupies the place).
+void mark_assigned(const Grower::Impl& g, int e, int patch, int m_out, Scratch& s, std::vector<char>& taken) {
+    const InputElements& in = g.input;
+    s.partner.assign(m_out, -1);
+    det::match_greedy(s.entries.data(), m_out, in.neighbors(e), patch, g.metric.params, s.match, s.partner.data(),
+                      1e300);
+    taken.assign(patch, 0);
+    for (int o = 0; o < m_out; ++o) {
+        const int i = s.partner[o];
+        if (i < 0) continue;
+        const Vec3 d = s.entries[o].offset - in.neighbors(e)[i].offset;
+        if (dot(d, d) < g.metric.threshold2) taken[i] = 1;
+    }
+}
+
+}  // namespace
+
+std::vector<Candidate> propose(Grower::Impl& g, double extent) {
+    const int n = static_cast<int>(g.horizon.size());
+    std::vector<std::vector<Candidate>> per(n);
+    std::vector<int> matched(n, -1);
+    const double gather = extent + std::sqrt(g.metric.threshold2);
+    core::parallel_for(n, g.threads, [&](int begin, int end, int) {
+        Scratch s;
+        std::vector<char> taken;
+        for (int k = begin; k < end; ++k) {
+            const int h = g.horizon[k];
+            const OutElement& he = g.out[h];
+            const Quat frame = g.frame_at(he.p);
+            gather_output(g, he.p, frame, h, gather, s);
+            const Match best = best_match(g, he.type, he.match >= 0 ? he.match : he.source,
+                                          count_within(s, g.metric.params.radius), s);
+            if (best.input < 0) continue;
+            matched[k] = best.input;
+            int patch = 0;
+            const det::NeighborEntry* nb = g.input.neighbors(best.input);
+            const double extent2 = extent * extent;
+            while (patch < g.input.patch_count[best.input] && dot(nb[patch].offset, nb[patch].offset) <= extent2)
+                ++patch;
+            mark_assigned(g, best.input, patch, static_cast<int>(s.entries.size()), s, taken);
+            for (int i = 0; i < patch; ++i) {
+                if (taken[i]) continue;
+                Candidate c;
+                c.p = he.p + frame.rotate(nb[i].offset);
+                if (g.metric.dimension == 2) c.p.z = 0.0;
+                c.type = nb[i].type;
+                c.source = nb[i].element;
+                c.frame = frame;
+                c.fit = best.mean();
+                c.proposer = h;
+                c.order = i;
+                per[k].push_back(c);
+            }
+        }
+    });
+    std::vector<Candidate> all;
+    for (int k = 0; k < n; ++k) {
+        if (matched[k] >= 0) g.out[g.horizon[k]].match = matched[k];
+        all.insert(all.end(), per[k].begin(), per[k].end());
+    }
+    return all;
+}
+
+int drop_outside(const Grower::Impl& g, const Domain& region, std::vector<Candidate>& candidates) {
+    std::vector<Vec3> samples;
+    const size_t before = candidates.size();
+    const double pull = kBoundaryPull * g.metric.params.spacing;
+    std::erase_if(candidates, [&](Candidate& c) {
+        if (!region.inside(c.p)) {
+            // Just outside: moved to the boundary, so that the region's edge is not left
+            // with a gap wherever the pattern's rows happen to fall beyond it.
+            const Vec3 q = region.closest_inside(c.p);
+            if (norm(q - c.p) > pull) return true;
+            c.p = q;
+        }
+        g.sample_positions(-1, c.source, c.frame, c.p, samples);
+        for (const Vec3& q : samples)
+            if (!region.inside(q)) return true;
+        return false;
+    });
+    return static_cast<int>(before - candidates.size());
+}
+
+namespace {
+
+// Two elements' samples closer than the exemplar ever shows samples of different elements
+// (noodles that cross have distant centroids but touching samples).
+bool samples_clash(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double core) {
+    const double c2 = core * core;
+    for (const Vec3& p : a)
+        for (const Vec3& q : b)
+            if (dot(p - q, p - q) < c2) return true;
+    return false;
+}
+
+// Element counts per type against the exemplar's shares.
+class TypeBalance {
+public:
+    explicit TypeBalance(const Grower::Impl& g) : g_(g), count_(g.exemplar.types.size(), 0), share_(count_.size(), 0.0) {
+        for (const OutElement& o : g.out) ++count_[o.type];
+        total_ = static_cast<int>(g.out.size());
+        for (const Element& e : g.exemplar.elements) share_[e.type] += 1.0 / g.exemplar.elements.size();
+    }
+    void add(int t) { ++count_[t], ++total_; }
+    void remove(int t) { --count_[t], --total_; }
+    // Type t is short of its share, and every blocking element is recent, unlocked,
+    // and of a type over its share (at most kMaxDisplaced of them).
+    bool may_displace(int t, const std::vector<int>& blocking) const {
+        if (static_cast<int>(blocking.size()) > kMaxDisplaced || !(share(t) < kMargin * share_[t])) return false;
+        for (const int i : blocking) {
+            const OutElement& o = g_.out[i];
+            if (i < g_.recent_first || o.locked || o.type == t || !(share(o.type) > share_[o.type])) return false;
+        }
+        return true;
+    }
+
+    // When type u is over its share: the type most short of its share (below the margin), else -1.
+    int short_type(int u) const {
+        if (!(share(u) > share_[u])) return -1;
+        int best = -1;
+        for (int t = 0; t < static_cast<int>(share_.size()); ++t)
+            if (t != u && share(t) < kMargin * share_[t] &&
+                (best < 0 || share(t) / share_[t] < share(best) / share_[best]))
+                best = t;
+        return best;
+    }
+
+private:
+    static constexpr int kMaxDisplaced = 4;
+    // Only a type clearly short of its share displaces others (no back and forth).
+    static constexpr double kMargin = 0.97;
+    double share(int t) const { return total_ > 0 ? static_cast<double>(count_[t]) / total_ : 0.0; }
+    const Grower::Impl& g_;
+    std::vector<int> count_;
+    std::vector<double> share_;
+    int total_ = 0;
+};
+
+// Removes the displaced elements (all at or after g.recent_first) and renumbers what
+// refers to the elements after them: the horizon and the rounds' first indices.
+void remove_displaced(Grower::Impl& g, const std::vector<char>& displaced) {
+    const int base = g.recent_first;
+    std::vector<int> renumber(displaced.size(), -1);
+    int next = base;
+    for (size_t k = 0; k < displaced.size(); ++k)
+        if (!displaced[k]) renumber[k] = next++;
+    auto map = [&](int i) { return i < base ? i : renumber[i - base]; };
+    std::vector<char> keep(displaced.size());
+    for (size_t k = 0; k < keep.size(); ++k) keep[k] = !displaced[k];
+    g.drop_tail(base, keep);
+    std::vector<int> horizon;
+    for (const int h : g.horizon)
+        if (map(h) >= 0) horizon.push_back(map(h));
+    g.horizon = std::move(horizon);
+    for (int& first : g.round_first) {
+        if (first < base) continue;
+        int k = first - base;
+        while (k < static_cast<int>(displaced.size()) && displaced[k]) ++k;
+        first = k < static_cast<int>(displaced.size()) ? renumber[k] : next;
+    }
+}
+
+}  // namespace
+
+int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge) {
+    std::vector<int> order(candidates.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        const Candidate &ca = candidates[a], &cb = candidates[b];
+        // Elements that keep others furthest away first: a small element taken first would
+        // block every large one (a pebble where a stone belongs), never the reverse.
+        const double xa = g.hard_core(ca.type, ca.type), xb = g.hard_core(cb.type, cb.type);
+        if (xa != xb) return xa > xb;
+        if (ca.fit != cb.fit) return ca.fit < cb.fit;
+        return a < b;  // horizon order, then the proposer's own order
+    });
+    const bool by_samples = g.bounds.has_samples;
+    const double reach = by_samples ? std::max(g.reach, 2.0 * g.extent + g.metric.params.spacing) : g.reach;
+    core::DynamicGrid taken_grid(std::max(reach, 1e-9), g.metric.dimension);
+    std::vector<Candidate> kept;
+    std::vector<std::vector<Vec3>> kept_samples;
+    std::vector<int> near;
+    std::vector<Vec3> mine, theirs;
+    std::vector<int> blocking;
+    std::vector<char> displaced(g.out.size() - g.recent_first, 0);
+    TypeBalance balance(g);
+    // The elements and taken candidates a candidate of type t at p (samples `mine`) would
+    // crowd: existing ones into `blocking`; returns true when a taken candidate is crowded.
+    auto crowds = [&](const Vec3& p, int t, const std::vector<Vec3>& mine, std::vector<int>& blocking) {
+        blocking.clear();
+        g.grid.query(p, reach, [&](int i) { return g.out[i].p; }, near);
+        for (const int i : near) {
+            if (i >= g.recent_first && displaced[i - g.recent_first]) continue;
+            const OutElement& o = g.out[i];
+            Vec3 d = o.p - p;
+            if (g.metric.dimension == 2) d.z = 0.0;
+            bool hit = norm(d) < g.hard_core(t, o.type);
+            if (!hit && by_samples) {
+                g.sample_positions(o.kept, o.source, o.frame, o.p, theirs);
+                hit = samples_clash(mine, theirs, g.sample_core(t, o.type));
+            }
+            if (hit) blocking.push_back(i);
+        }
+        taken_grid.query(p, reach, [&](int i) { return kept[i].p; }, near);
+        for (const int i : near) {
+            if (norm(kept[i].p - p) < merge * g.hard_core(t, kept[i].type)) return true;
+            if (by_samples && samples_clash(mine, kept_samples[i], merge * g.sample_core(t, kept[i].type)))
+                return true;
+        }
+        return false;
+    };
+    for (const int a : order) {
+        Candidate c = candidates[a];
+        if (by_samples) g.sample_positions(-1, c.source, c.frame, c.p, mine);
+        if (crowds(c.p, c.type, mine, blocking)) continue;
+        if (!blocking.empty()) {
+            // A type short of its share may take the place of recent elements of types over
+            // theirs (the big element the small ones crowded out); otherwise it yields.
+            if (!balance.may_displace(c.type, blocking)) continue;
+            for (const int i : blocking) displaced[i - g.recent_first] = 1, balance.remove(g.out[i].type);
+            g.displaced += static_cast<int>(blocking.size());
+        } else if (const int t = balance.short_type(c.type); t >= 0 && !by_samples) {
+            // Redistribution (section V.C) by the global histogram: a candidate of a type over
+            // its share becomes the type most short of its share where that one fits.
+            const int source = g.input.nearest_in_pool(t, g.input.centroid[c.source], 1e300);
+            if (source >= 0 && !crowds(c.p, t, mine, blocking) && blocking.empty()) {
+                c.type = t;
+                c.source = source;
+            }
+        }
+        taken_grid.insert(static_cast<int>(kept.size()), c.p);
+        kept.push_back(c);
+        balance.add(c.type);
+        if (by_samples) kept_samples.push_back(mine);
+        else kept_samples.emplace_back();
+    }
+    const int dropped = static_cast<int>(candidates.size() - kept.size());
+    candidates = std::move(kept);
+    if (std::find(displaced.begin(), displaced.end(), 1) != displaced.end()) remove_displaced(g, displaced);
+    return dropped;
+}
+
+int add_candidates(Grower::Impl& g, const std::vector<Candidate>& candidates) {
+    const int first = static_cast<int>(g.out.size());
+    for (const Candidate& c : candidates) {
+        OutElement e;
+        e.p = c.p;
+        e.type = c.type;
+        e.source = c.source;
+        e.frame = c.frame;
+        e.match = c.source;
+        e.born = g.round;
+        e.tries = c.tries;
+        g.add(e);
+    }
+    return first;
+}
+
+int drop_high_energy(Grower::Impl& g, int first, double t, double& mean, std::vector<Candidate>& dropped_out) {
+    const int n = static_cast<int>(g.out.size()) - first;
+    std::vector<double> energy(n, 0.0);
+    std::vector<int> matched(n, -1);
+    core::parallel_for(n, g.threads, [&](int begin, int end, int) {
+        Scratch s;
+        for (int k = begin; k < end; ++k) {
+            const OutElement& e = g.out[first + k];
+            gather_output(g, e.p, e.frame, first + k, g.metric.params.radius, s);
+            const Match m = best_match(g, e.type, e.source, static_cast<int>(s.entries.size()), s);
+            energy[k] = m.mean();
+            matched[k] = m.input;
+        }
+    });
+    double sum = 0.0;
+    for (const double e : energy) sum += e;
+    const double round_mean = n > 0 ? sum / n : 0.0;
+    std::vector<char> keep(n, 1);
+    int dropped = 0;
+    double kept_sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        if (matched[k] >= 0) g.out[first + k].match = matched[k];
+        keep[k] = energy[k] <= t * round_mean;
+        if (keep[k]) {
+            kept_sum += energy[k];
+            continue;
+        }
+        ++dropped;
+        const OutElement& e = g.out[first + k];
+        Candidate c;
+        c.p = e.p;
+        c.type = e.type;
+        c.source = e.source;
+        c.frame = e.frame;
+        c.fit = energy[k];
+        c.tries = e.tries + 1;
+        dropped_out.push_back(c);
+    }
+    mean = n - dropped > 0 ? kept_sum / (n - dropped) : 0.0;
+    g.drop_tail(first, keep);
+    return dropped;
+}
+
+}  // namespace tessera::grow

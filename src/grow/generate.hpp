@@ -1,0 +1,38 @@
+// Generation (section IV): candidates from the partial pair assignments of the horizon,
+// and the filters that thin them.
+#pragma once
+
+#include <vector>
+
+#include "grow/grow_state.hpp"
+
+namespace tessera::grow {
+
+
+// For each horizon element h: its best input element e (also stored as its match), then
+// the input neighbours e' of e within `extent` that the partial pair assignment leaves
+// without an output partner closer than c, as candidates at p(h) + o(h)(p(e') - p(e)).
+// In horizon order; parallel over the horizon.
+std::vector<Candidate> propose(Grower::Impl& g, double extent);
+
+// Drops candidates with a sample outside `region`; returns how many.
+int drop_outside(const Grower::Impl& g, const Domain& region, std::vector<Candidate>& candidates);
+
+// The overlap filter: candidates taken best fit first, each dropped when an existing
+// element lies closer than the hard-core distance of their types, or an already taken
+// candidate closer than `merge` times it (1: the patch choice; the tree search merges only
+// near-duplicates and resolves the other conflicts itself). A candidate of a type short of
+// its share in the output may displace last round's elements of types over theirs (they are
+// removed). Returns how many candidates were dropped.
+int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge);
+
+// The energy filter, on candidates already added as elements [first, end): each one's best
+// neighbourhood energy (per neighbour) against the round's mean; those above t times it
+// are removed. Returns how many, and the mean energy of those kept in `mean`.
+// Candidates dropped are appended to `dropped`.
+int drop_high_energy(Grower::Impl& g, int first, double t, double& mean, std::vector<Candidate>& dropped);
+
+// Adds candidates as elements of round g.round (ids assigned later); returns the first index.
+int add_candidates(Grower::Impl& g, const std::vector<Candidate>& candidates);
+
+}  // namespace tessera::grow

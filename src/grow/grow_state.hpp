@@ -1,0 +1,109 @@
+// The state a Grower keeps (include/tessera/grow.hpp): the indexed exemplar and the output,
+// one record per element with the input element it copies, in a dynamic grid.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "core/crowding_repair.hpp"
+#include "core/dynamic_grid.hpp"
+#include "grow/input_elements.hpp"
+#include "tessera/grow.hpp"
+
+namespace tessera {
+
+namespace grow {
+
+// One output element. Grown elements are a rigid copy of input element `source`, turned by
+// `frame` (the field's frame where it was made); elements of an existing arrangement keep
+// their own samples (`kept`, an index into Grower::Impl::existing).
+struct OutElement {
+    Vec3 p;                  // centroid
+    int type = 0;
+    int source = -1;         // input element copied; -1 = an element of the existing arrangement
+    int kept = -1;
+    Quat frame;
+    int match = -1;          // input element its neighbourhood matched best last time
+    int born = 0;            // round that made it
+    bool locked = false;
+    int tries = 0;           // as Candidate::tries, while it is being filtered
+    std::uint64_t id = 0;
+};
+
+// A proposed element (section IV).
+struct Candidate {
+    Vec3 p;
+    int type = 0;
+    int source = -1;     // input element e' whose attributes and layout it copies
+    Quat frame;
+    double fit = 0.0;    // mean energy (Eq. 3 per neighbour) of its proposer's match
+    int proposer = -1;   // horizon element that proposed it
+    int order = 0;       // its rank among the proposer's candidates
+    int tries = 0;       // rounds it was proposed again after the energy filter dropped it
+};
+
+// Buffers of one worker (no allocation in the inner loops once warm).
+struct Scratch {
+    std::vector<int> ids, candidates, partner;
+    std::vector<det::NeighborEntry> entries;
+    det::MatchScratch match;
+};
+
+}  // namespace grow
+
+struct Grower::Impl {
+    Impl(const Exemplar& exemplar, const GrowOptions& options);
+
+    Exemplar exemplar;
+    GrowOptions options;
+    grow::Metric metric;
+    int threads = 1;
+    grow::InputElements input;
+    core::CrowdingBounds bounds;       // the exemplar's close-distance tails (centroids, samples)
+    double reach = 0.0;                // the largest hard core: the overlap filter's query radius
+    double extent = 0.0;               // the farthest sample from its element's centroid
+
+    std::vector<grow::OutElement> out;
+    core::DynamicGrid grid;
+    std::vector<int> horizon;
+    // Candidates the energy filter dropped, proposed again next round: their neighbourhood
+    // is fuller then, and a place left empty would stay a hole behind the horizon.
+    std::vector<grow::Candidate> retry;
+    Arrangement existing;              // samples of the elements kept from set_arrangement
+    int round = 0;
+    // First element of each round that added some (elements are stored in round order), and
+    // the first of the recent rounds whose elements a candidate short of its type's share may
+    // displace (generate.cpp, TypeBalance): they are all at the tail of `out`.
+    std::vector<int> round_first;
+    int recent_first = 0;
+    int displaced = 0;                 // elements removed so, in the current round
+    std::uint64_t next_id = 0;
+    Box grown;                         // union of the regions grown (the arrangement's domain)
+    bool has_bounds = false;
+
+    Progress progress;
+    std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+    mutable Arrangement view;          // arrangement(), rebuilt when `dirty`
+    mutable bool dirty = true;
+
+    // Local frame of the field at p (identity without one).
+    Quat frame_at(const Vec3& p) const;
+    // Hard-core distance between types a and b, with a floor so that coincident
+    // candidates always merge.
+    double hard_core(int a, int b) const;
+    // Hard-core distance between samples of different elements of types a and b (0 when the
+    // exemplar has no multi-sample elements).
+    double sample_core(int a, int b) const;
+    // Appends an element (grid included); returns its index.
+    int add(const grow::OutElement& e);
+    // Moves element i to p (grid included).
+    void move(int i, const Vec3& p);
+    // Removes the elements from index `first` on whose `keep` is 0 (they are the newest).
+    void drop_tail(int first, const std::vector<char>& keep);
+    // Sample positions of an element centred at p: the samples of existing element `kept`
+    // (when >= 0), else input element `source`'s layout turned by `frame`.
+    void sample_positions(int kept, int source, const Quat& frame, const Vec3& p, std::vector<Vec3>& out) const;
+};
+
+}  // namespace tessera

@@ -1,0 +1,287 @@
+// tessera::Grower (include/tessera/grow.hpp): starting points, the grow calls and their
+// bounds, progress, and the arrangement a caller sees.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/rng.hpp"
+#include "grow/grow_state.hpp"
+#include "grow/round.hpp"
+#include "tessera/error.hpp"
+
+namespace tessera {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Rounds in a row without a net gain after which growth counts as done.
+constexpr int kStallRounds = 3;
+
+// The existing elements that can propose into `region`: within reach of it.
+std::vector<int> elements_near(const Grower::Impl& g, const Domain& region, double reach) {
+    const Box& b = region.bounds();
+    Vec3 half = (b.hi - b.lo) * 0.5;
+    if (g.metric.dimension == 2) half.z = 0.0;
+    std::vector<int> ids, near;
+    g.grid.query(b.center(), norm(half) + reach, [&](int i) { return g.out[i].p; }, ids);
+    for (const int i : ids)
+        if (norm(region.closest_inside(g.out[i].p) - g.out[i].p) <= reach) near.push_back(i);
+    return near;
+}
+
+void extend(Box& box, bool& has, const Box& more) {
+    if (!has) {
+        box = more;
+        has = true;
+        return;
+    }
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], more.lo[k]), box.hi[k] = std::max(box.hi[k], more.hi[k]);
+}
+
+void report_progress(Grower::Impl& g, const char* stage, int round, int rounds, double fraction, double energy) {
+    if (!g.progress) return;
+    ProgressEvent e;
+    e.stage = stage;
+    e.iteration = round;
+    e.iterations = rounds;
+    e.energy = energy;
+    e.elapsed_s = std::chrono::duration<double>(Clock::now() - g.t0).count();
+    e.fraction = std::clamp(fraction, 0.0, 1.0);
+    if (!g.progress(e)) throw Cancelled();
+}
+
+// Rounds until `done` says so, no round adds anything, or the bound.
+template <class Done, class Fraction>
+GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done& done, const Fraction& fraction) {
+    GrowReport report;
+    const auto start = Clock::now();
+    g.t0 = start;
+    report_progress(g, "round", -1, g.options.max_rounds, 0.0, 0.0);
+    int stalled = 0;
+    for (;;) {
+        if (done(report)) break;
+        if (report.rounds >= g.options.max_rounds) {
+            report.bound_hit = true;
+            break;
+        }
+        grow::RoundLimits limits = base;
+        if (base.budget >= 0) limits.budget = base.budget - report.added;
+        const int added = grow::run_round(g, limits, report);
+        ++report.rounds;
+        report_progress(g, "round", report.rounds - 1, g.options.max_rounds, fraction(report), report.energy);
+        // Covered when a round makes nothing; a few rounds in a row that only displace as many
+        // as they make would cycle.
+        stalled = added <= 0 ? stalled + 1 : 0;
+        if (report.last_made == 0 || stalled >= kStallRounds) {
+            report.covered = true;
+            break;
+        }
+    }
+    report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return report;
+}
+
+}  // namespace
+
+Grower::Grower(const Exemplar& exemplar, const GrowOptions& options)
+    : impl_(std::make_unique<Impl>(exemplar, options)) {}
+Grower::~Grower() = default;
+Grower::Grower(Grower&&) noexcept = default;
+Grower& Grower::operator=(Grower&&) noexcept = default;
+
+void Grower::set_progress(Progress progress) { impl_->progress = std::move(progress); }
+const std::vector<int>& Grower::horizon() const { return impl_->horizon; }
+double Grower::radius() const { return impl_->metric.params.radius; }
+
+void Grower::seed(const Vec3& center) {
+    Impl& g = *impl_;
+    const grow::InputElements& in = g.input;
+    // The seed element: drawn among the elements whose whole patch lies in the exemplar
+    // (all elements when none does), keyed by the seed and the world cell of the centre.
+    std::vector<int> interior;
+    for (int i = 0; i < in.size(); ++i)
+        if (g.exemplar.domain.distance_to_boundary(in.centroid[i]) >= g.metric.patch_radius) interior.push_back(i);
+    if (interior.empty())
+        for (int i = 0; i < in.size(); ++i) interior.push_back(i);
+    const double cell = g.metric.params.spacing;
+    const core::KeyedRng rng(g.options.seed, core::Purpose::grow_seed,
+                             static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.x / cell))),
+                             static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.y / cell))) * 1000003u +
+                                 static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.z / cell))));
+    const int e = interior[rng.below(0, interior.size())];
+    const Quat frame = g.frame_at(center);
+    g.horizon.clear();
+    ++g.round;
+    g.round_first.push_back(static_cast<int>(g.out.size()));
+    auto place = [&](int source, const Vec3& offset) {
+        grow::OutElement o;
+        o.p = center + frame.rotate(offset);
+        if (g.metric.dimension == 2) o.p.z = 0.0;
+        o.type = in.type[source];
+        o.source = o.match = source;
+        o.frame = frame;
+        o.born = g.round;
+        o.id = g.next_id++;
+        g.horizon.push_back(g.add(o));
+    };
+    place(e, Vec3{});
+    for (int k = 0; k < in.patch_count[e]; ++k) place(in.neighbors(e)[k].element, in.neighbors(e)[k].offset);
+}
+
+void Grower::set_arrangement(const Arrangement& existing) {
+    Impl& g = *impl_;
+    existing.validate("existing arrangement");
+    if (existing.dimension != g.exemplar.dimension)
+        throw Error(ErrorKind::input, "existing arrangement: " + std::to_string(existing.dimension) +
+                                          "D, the exemplar is " + std::to_string(g.exemplar.dimension) + "D");
+    std::vector<int> type_map(existing.types.size());
+    for (size_t t = 0; t < existing.types.size(); ++t) {
+        type_map[t] = g.exemplar.find_type(existing.types[t].name);
+        if (type_map[t] < 0)
+            throw Error(ErrorKind::input, "existing arrangement: type '" + existing.types[t].name +
+                                              "' is not a type of the exemplar");
+    }
+    for (const Element& e : existing.elements) {
+        const int t = type_map[e.type];
+        for (const Element& x : g.exemplar.elements)
+            if (x.type == t && x.sample_count != e.sample_count)
+                throw Error(ErrorKind::input, "existing arrangement: elements of type '" + g.exemplar.types[t].name +
+                                                  "' have " + std::to_string(e.sample_count) +
+                                                  " samples, the exemplar's have " + std::to_string(x.sample_count));
+    }
+    Impl& h = g;  // a fresh output over the same index
+    h.out.clear();
+    h.grid = core::DynamicGrid(h.metric.params.spacing, h.metric.dimension);
+    h.horizon.clear();
+    h.round = 0;
+    h.round_first.clear();
+    h.retry.clear();
+    h.has_bounds = false;
+    h.dirty = true;
+    h.existing = existing;
+    h.existing.types = h.exemplar.types;
+    std::uint64_t max_id = 0;
+    for (size_t i = 0; i < existing.elements.size(); ++i) {
+        Element& e = h.existing.elements[i];
+        e.type = type_map[existing.elements[i].type];
+        grow::OutElement o;
+        o.p = grow::element_centroid(existing, existing.elements[i]);
+        o.type = e.type;
+        o.kept = static_cast<int>(i);
+        o.locked = true;
+        o.frame = e.orientation;
+        o.id = e.id;
+        max_id = std::max(max_id, e.id);
+        h.horizon.push_back(h.add(o));
+    }
+    h.next_id = existing.elements.empty() ? 0 : max_id + 1;
+    h.round_first.clear();
+    extend(h.grown, h.has_bounds, existing.domain.bounds());
+}
+
+GrowReport Grower::grow(const Domain& region) {
+    Impl& g = *impl_;
+    if (region.dimension() != g.metric.dimension)
+        throw Error(ErrorKind::domain, "region: " + std::to_string(region.dimension()) + "D, the exemplar is " +
+                                           std::to_string(g.metric.dimension) + "D");
+    if (!(region.measure() > 0.0)) throw Error(ErrorKind::domain, "region: it is empty (zero area or volume)");
+    const double reach = g.metric.patch_radius + g.metric.params.radius;
+    if (g.out.empty()) {
+        seed(region.closest_inside(region.bounds().center()));
+        std::vector<char> keep(g.out.size());
+        std::vector<Vec3> samples;
+        for (size_t i = 0; i < g.out.size(); ++i) {
+            g.sample_positions(-1, g.out[i].source, g.out[i].frame, g.out[i].p, samples);
+            keep[i] = std::all_of(samples.begin(), samples.end(), [&](const Vec3& q) { return region.inside(q); });
+        }
+        g.drop_tail(0, keep);
+        g.horizon.clear();
+        for (size_t i = 0; i < g.out.size(); ++i) g.horizon.push_back(static_cast<int>(i));
+        if (g.out.empty()) throw Error(ErrorKind::domain, "region: too small to hold the exemplar's elements");
+    } else {
+        std::vector<int> near = elements_near(g, region, reach);
+        if (near.empty())
+            throw Error(ErrorKind::input, "region: it does not touch the arrangement (no element within " +
+                                              std::to_string(reach) + " of it) and growth adds only next to elements");
+        g.horizon = std::move(near);
+    }
+    extend(g.grown, g.has_bounds, region.bounds());
+    const double per_element = g.exemplar.domain.measure() / std::max<size_t>(1, g.exemplar.elements.size());
+    const double expected = region.measure() / per_element;
+    const size_t start = g.out.size();
+    grow::RoundLimits limits;
+    limits.region = &region;
+    return run_rounds(
+        g, limits, [](const GrowReport&) { return false; },
+        [&](const GrowReport&) { return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected)); });
+}
+
+GrowReport Grower::grow(int n) {
+    Impl& g = *impl_;
+    if (n <= 0) throw Error(ErrorKind::option, "elements: must be > 0");
+    Vec3 origin;
+    if (g.out.empty()) {
+        seed(Vec3{});
+        n -= static_cast<int>(g.out.size());
+    }
+    for (const grow::OutElement& e : g.out) origin = origin + e.p;
+    origin = origin * (1.0 / g.out.size());
+    grow::RoundLimits limits;
+    limits.budget = std::max(0, n);
+    limits.origin = origin;
+    return run_rounds(
+        g, limits, [&](const GrowReport& r) { return r.added >= n; },
+        [&](const GrowReport& r) { return static_cast<double>(r.added) / std::max(1, n); });
+}
+
+GrowReport Grower::step() {
+    Impl& g = *impl_;
+    GrowReport report;
+    if (g.out.empty()) seed(Vec3{});
+    grow::run_round(g, grow::RoundLimits{}, report);
+    report.rounds = 1;
+    report.covered = report.added == 0;
+    return report;
+}
+
+const Arrangement& Grower::arrangement() const {
+    const Impl& g = *impl_;
+    if (!g.dirty) return g.view;
+    Arrangement a;
+    a.dimension = g.exemplar.dimension;
+    a.types = g.exemplar.types;
+    a.attribute_names = g.exemplar.attribute_names;
+    Box box;
+    bool has = g.has_bounds;
+    if (has) box = g.grown;
+    std::vector<Vec3> samples;
+    for (const grow::OutElement& o : g.out) {
+        g.sample_positions(o.kept, o.source, o.frame, o.p, samples);
+        const Element& from = o.kept >= 0 ? g.existing.elements[o.kept] : g.exemplar.elements[o.source];
+        const int index = a.add_element(o.type, samples, from.radius);
+        Element& e = a.elements[index];
+        e.position = o.p;
+        e.orientation = o.kept >= 0 ? from.orientation : o.frame * from.orientation;
+        e.scale = from.scale;
+        e.attributes = from.attributes;
+        e.id = o.id;
+        e.locked = o.locked;
+        for (const Vec3& q : samples) extend(box, has, Box{q, q});
+    }
+    const double margin = 0.5 * g.metric.params.spacing;
+    if (!has) box = Box{Vec3{}, Vec3{1, 1, 1}};
+    Vec3 lo = box.lo - Vec3{margin, margin, margin}, hi = box.hi + Vec3{margin, margin, margin};
+    if (a.dimension == 2) lo.z = hi.z = 0.0;
+    a.domain = Domain::box(lo, hi, a.dimension);
+    a.stats.method = "grow";
+    a.stats.radius = g.metric.params.radius;
+    a.stats.seed = g.options.seed;
+    a.stats.threads = g.threads;
+    g.view = std::move(a);
+    g.dirty = false;
+    return g.view;
+}
+
+}  // namespace tessera

@@ -1,0 +1,55 @@
+// Crowding repair of a growth round (grow/repair.hpp).
+#include "grow/repair.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "core/crowding_repair.hpp"
+
+namespace tessera::grow {
+
+int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain* region) {
+    if (movable.empty()) return 0;
+    const double reach = g.reach + 2.0 * g.extent + g.metric.params.spacing;
+    // The movable elements, then the fixed ones within reach of them (locked in the copy).
+    std::vector<int> members = movable;
+    std::unordered_set<int> in(movable.begin(), movable.end());
+    std::vector<int> near;
+    for (const int v : movable) {
+        g.grid.query(g.out[v].p, reach, [&](int i) { return g.out[i].p; }, near);
+        for (const int i : near)
+            if (in.insert(i).second) members.push_back(i);
+    }
+    std::sort(members.begin() + static_cast<long>(movable.size()), members.end());
+    Exemplar part;
+    part.dimension = g.metric.dimension;
+    part.types = g.exemplar.types;
+    std::vector<Vec3> samples;
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (size_t k = 0; k < members.size(); ++k) {
+        const OutElement& o = g.out[members[k]];
+        g.sample_positions(o.kept, o.source, o.frame, o.p, samples);
+        const int e = part.add_element(o.type, samples);
+        part.elements[e].radius = o.kept >= 0 ? g.existing.elements[o.kept].radius : g.exemplar.elements[o.source].radius;
+        part.elements[e].locked = k >= movable.size() || o.locked;
+        for (const Vec3& q : samples)
+            for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], q[a]), hi[a] = std::max(hi[a], q[a]);
+    }
+    const Vec3 pad{g.metric.params.spacing, g.metric.params.spacing, g.metric.params.spacing};
+    Vec3 blo = lo - pad, bhi = hi + pad;
+    if (part.dimension == 2) blo.z = bhi.z = 0.0;
+    const Domain around = Domain::box(blo, bhi, part.dimension);
+    core::CrowdingRepairOptions options;
+    options.threads = 1;  // a round's part is small; the rounds' other steps are parallel
+    const core::CrowdingRepairReport report = core::repair_crowding(part, region ? *region : around, g.bounds, options);
+    for (size_t k = 0; k < movable.size(); ++k) {
+        const Element& e = part.elements[k];
+        if (e.locked) continue;
+        Vec3 c;
+        for (int s = 0; s < e.sample_count; ++s) c = c + part.samples[e.first_sample + s].p;
+        g.move(movable[k], c * (1.0 / e.sample_count));
+    }
+    return report.remaining;
+}
+
+}  // namespace tessera::grow
