@@ -1,6 +1,7 @@
 // apps/tessera/cmd_grow.cpp — `tessera grow INPUT -o OUTPUT (--region SHAPE | --elements N)`:
 // grows an arrangement outward along its horizon (tessera::Grower, docs/grow.md), from a
 // patch of the exemplar or next to the elements of --from, which stay where they are.
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -146,10 +147,12 @@ void run_grow(GrowArgs& args) {
         status.step("writing " + args.preview, [&] { tessera::render_to_file(result, args.preview); });
     status.step("writing " + args.output, [&] { return write_arrangement(result, args.output, save_options); });
     if (!args.quiet) {
-        std::cerr << "grow: " << report.added << " elements in " << report.rounds << " rounds ("
-                  << format_number(report.seconds) << " s), " << result.elements.size() << " in all";
+        char line[256];
+        std::snprintf(line, sizeof line, "done: %zu elements (%d grown in %d rounds), %.2f s, final energy %.6g",
+                      result.elements.size(), report.added, report.rounds, report.seconds, report.energy);
+        std::cerr << line;
         if (report.bound_hit) std::cerr << "; stopped by --max-rounds " << args.options.max_rounds;
-        std::cerr << "; wrote " << args.output << std::endl;
+        std::cerr << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview) << std::endl;
     }
 }
 

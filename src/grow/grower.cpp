@@ -262,7 +262,8 @@ const Arrangement& Grower::arrangement() const {
         const Element& from = o.kept >= 0 ? g.existing.elements[o.kept] : g.exemplar.elements[o.source];
         const int index = a.add_element(o.type, samples, from.radius);
         Element& e = a.elements[index];
-        e.position = o.p;
+        // A kept element keeps its own position bit for bit (not its recomputed centroid).
+        e.position = o.kept >= 0 ? from.position : o.p;
         e.orientation = o.kept >= 0 ? from.orientation : o.frame * from.orientation;
         e.scale = from.scale;
         e.attributes = from.attributes;

@@ -1,0 +1,315 @@
+// tessera::Grower (include/tessera/grow.hpp): what a user of on-demand growth sees. A
+// lattice keeps its order and spacing over many rings; class shares hold, a rare class
+// included; growing A then B looks like growing A and B at once, without crowding or holes
+// along the seam; locked elements never change; multi-sample shapes are copied whole; the
+// round bound is reported; bad input is a clear error; the thread count changes nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "quality_data.hpp"
+#include "tessera/error.hpp"
+#include "tessera/tessera.hpp"
+
+using namespace tessera;
+using test::example;
+
+namespace {
+
+// A box of the given half-size around the exemplar's centre.
+Domain centred_box(const Exemplar& ex, double half) {
+    const Vec3 c = ex.domain.bounds().center();
+    if (ex.dimension == 2) return Domain::box(c - Vec3{half, half, 0}, c + Vec3{half, half, 0}, 2);
+    return Domain::box(c - Vec3{half, half, half}, c + Vec3{half, half, half}, 3);
+}
+
+std::vector<double> type_shares(const std::vector<Element>& elements, size_t types) {
+    std::vector<double> share(types, 0.0);
+    for (const Element& e : elements) share[e.type] += 1.0 / static_cast<double>(elements.size());
+    return share;
+}
+
+Arrangement grown(const Exemplar& ex, const Domain& region, GrowOptions o = {}) {
+    Grower g(ex, o);
+    const GrowReport r = g.grow(region);
+    EXPECT_TRUE(r.covered) << "the region was not covered in " << r.rounds << " rounds";
+    EXPECT_FALSE(r.bound_hit);
+    return g.arrangement();
+}
+
+// Crowded shares within 1.5x of the exemplar's (one element more at small counts), no
+// coincident pairs: the bound the quality tests put on synthesis.
+void expect_no_crowding(const Exemplar& ex, const Arrangement& out, const std::string& what) {
+    for (const CrowdingPair& c : crowding(ex, out)) {
+        EXPECT_LE(c.output_share, 1.5 * c.exemplar_share + 1.0 / std::max<long>(1, c.output_elements))
+            << what << " " << c.name_a << ">" << c.name_b;
+        if (c.exemplar_coincident == 0) {
+            EXPECT_EQ(c.output_coincident, 0) << what << " " << c.name_a << ">" << c.name_b;
+        }
+    }
+}
+
+void expect_no_hole(const Exemplar& ex, const Arrangement& out, const std::string& what) {
+    const double hole = largest_empty_circle(out).radius, exemplar_hole = largest_empty_circle(ex).radius;
+    EXPECT_LE(hole, 1.3 * exemplar_hole) << what << ": hole " << hole << " vs the exemplar's " << exemplar_hole;
+}
+
+// A two-class exemplar with a rare class: dots on a jittered grid, one in twelve a berry.
+Exemplar rare_class_exemplar() {
+    Exemplar ex;
+    ex.dimension = 2;
+    ex.types.resize(2);
+    ex.types[0].name = "dot";
+    ex.types[1].name = "berry";
+    ex.domain = Domain::box({0, 0, 0}, {12, 12, 0}, 2);
+    std::uint64_t s = 12345;
+    auto jitter = [&] {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        return (static_cast<double>(s >> 11) / 9007199254740992.0 - 0.5) * 0.3;
+    };
+    for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 12; ++j) {
+            const bool berry = (i * 5 + j * 7) % 12 == 0;
+            ex.add_element(berry ? 1 : 0, {Vec3{i + 0.5 + jitter(), j + 0.5 + jitter(), 0}}, 0.3);
+        }
+    return ex;
+}
+
+}  // namespace
+
+TEST(Grow, AJitteredLatticeKeepsItsOrderAndSpacingOverTwentyRings) {
+    const Exemplar ex = example("hex_jittered_2d");
+    const double spacing = mean_nearest_neighbor_distance(ex);
+    const Arrangement out = grown(ex, centred_box(ex, 20.0 * spacing));
+    EXPECT_GT(out.elements.size(), 1000u);
+    EXPECT_GE(mean_psi6(out), 0.8);
+    EXPECT_NEAR(mean_nearest_neighbor_distance(out), spacing, 0.05 * spacing);
+    expect_no_crowding(ex, out, "hex");
+    expect_no_hole(ex, out, "hex");
+    EXPECT_GE(inside_fraction(out), 0.995);
+}
+
+TEST(Grow, TwoClassStripesKeepTheirSharesAndTheRegion) {
+    const Exemplar ex = example("striped_dots_2d");
+    const Arrangement out = grown(ex, ex.domain.scaled(std::sqrt(20.0)));
+    const std::vector<double> want = type_shares(ex.elements, ex.types.size());
+    const std::vector<double> got = type_shares(out.elements, ex.types.size());
+    for (size_t t = 0; t < want.size(); ++t) EXPECT_NEAR(got[t], want[t], 0.05) << ex.types[t].name;
+    expect_no_crowding(ex, out, "striped dots");
+    EXPECT_GE(inside_fraction(out), 0.995);
+}
+
+TEST(Grow, ARareClassKeepsItsShareWithinTwentyPercent) {
+    const Exemplar ex = rare_class_exemplar();
+    const double want = type_shares(ex.elements, 2)[1];
+    ASSERT_LT(want, 0.1);
+    for (std::uint64_t seed : {1, 2}) {
+        GrowOptions o;
+        o.seed = seed;
+        const Arrangement out = grown(ex, ex.domain.scaled(3.0), o);
+        EXPECT_NEAR(type_shares(out.elements, 2)[1], want, 0.2 * want) << "seed " << seed;
+        expect_no_crowding(ex, out, "rare class");
+    }
+}
+
+TEST(Grow, PoissonDisksHaveNoHolesOrCrowdingAlsoAlongTheSeamOfTwoCalls) {
+    const Exemplar ex = example("poisson_disk_2d");
+    const Box b = ex.domain.bounds();
+    const Vec3 size = b.size();
+    const Domain a = Domain::box(b.lo, b.lo + Vec3{2 * size.x, 2 * size.y, 0}, 2);
+    const Domain right = Domain::box(b.lo + Vec3{2 * size.x, 0, 0}, b.lo + Vec3{4 * size.x, 2 * size.y, 0}, 2);
+    const Domain both = Domain::box(b.lo, b.lo + Vec3{4 * size.x, 2 * size.y, 0}, 2);
+    Grower g(ex);
+    g.grow(a);
+    const GrowReport second = g.grow(right);
+    EXPECT_TRUE(second.covered);
+    EXPECT_GT(second.added, 0);
+    const Arrangement seamed = g.arrangement();
+    const Arrangement at_once = grown(ex, both);
+    expect_no_crowding(ex, seamed, "A then B");
+    expect_no_hole(ex, seamed, "A then B");
+    // Within noise of growing both at once: the count and the pair correlation.
+    const double n1 = static_cast<double>(seamed.elements.size()), n2 = static_cast<double>(at_once.elements.size());
+    EXPECT_NEAR(n1, n2, 0.05 * n2);
+    const double e1 = pcf_relative_error(ex, seamed), e2 = pcf_relative_error(ex, at_once);
+    EXPECT_LT(e1, 1.3 * e2 + 0.02) << "A then B " << e1 << ", at once " << e2;
+    // Around the seam (x = the boundary between A and B) specifically: no hole either.
+    const double seam = b.lo.x + 2 * size.x, spacing = mean_nearest_neighbor_distance(ex);
+    Arrangement strip;
+    strip.dimension = 2;
+    strip.types = seamed.types;
+    strip.domain = Domain::box({seam - 3 * spacing, b.lo.y, 0}, {seam + 3 * spacing, b.lo.y + 2 * size.y, 0}, 2);
+    for (const Element& e : seamed.elements)
+        if (strip.domain.inside(e.position)) strip.add_element(e.type, {e.position}, e.radius);
+    expect_no_hole(ex, strip, "seam strip");
+}
+
+TEST(Grow, TwoClassGrownInTwoCallsMatchesOneCallInSharesAndPcf) {
+    const Exemplar ex = example("two_class_2d");
+    const Box b = ex.domain.bounds();
+    const Vec3 size = b.size();
+    const Domain left = Domain::box(b.lo, b.lo + Vec3{2 * size.x, 3 * size.y, 0}, 2);
+    const Domain right = Domain::box(b.lo + Vec3{2 * size.x, 0, 0}, b.lo + Vec3{4 * size.x, 3 * size.y, 0}, 2);
+    Grower g(ex);
+    g.grow(left);
+    g.grow(right);
+    const Arrangement seamed = g.arrangement();
+    const Arrangement at_once = grown(ex, Domain::box(b.lo, b.lo + Vec3{4 * size.x, 3 * size.y, 0}, 2));
+    const std::vector<double> s1 = type_shares(seamed.elements, 2), s2 = type_shares(at_once.elements, 2);
+    EXPECT_NEAR(s1[0], s2[0], 0.03);
+    EXPECT_LT(pcf_relative_error(ex, seamed), 1.3 * pcf_relative_error(ex, at_once) + 0.02);
+    expect_no_crowding(ex, seamed, "two class A then B");
+}
+
+TEST(Grow, LockedElementsAreBitIdenticalAfterGrowthAndSynthesis) {
+    const Exemplar ex = example("two_class_2d");
+    Arrangement start = synthesize_det(ex, ex.domain);
+    for (Element& e : start.elements) e.locked = true;
+    Grower g(ex);
+    g.set_arrangement(start);
+    g.grow(ex.domain.scaled(2.5));
+    g.grow(ex.domain.scaled(3.0));
+    Arrangement out = g.arrangement();
+    EXPECT_GT(out.elements.size(), 3 * start.elements.size());
+    std::map<std::uint64_t, const Element*> by_id;
+    for (const Element& e : out.elements) by_id[e.id] = &e;
+    auto expect_same = [&](const Arrangement& after, const std::string& what) {
+        std::map<std::uint64_t, const Element*> now;
+        for (const Element& e : after.elements) now[e.id] = &e;
+        for (const Element& a : start.elements) {
+            ASSERT_TRUE(now.count(a.id)) << what << ": element " << a.id << " is gone";
+            const Element& b = *now[a.id];
+            EXPECT_EQ(a.type, b.type) << what;
+            EXPECT_TRUE(b.locked) << what;
+            EXPECT_TRUE(a.position.x == b.position.x && a.position.y == b.position.y) << what << " element " << a.id;
+            for (int s = 0; s < a.sample_count; ++s) {
+                const Vec3& p = start.samples[a.first_sample + s].p;
+                const Vec3& q = after.samples[b.first_sample + s].p;
+                EXPECT_TRUE(p.x == q.x && p.y == q.y) << what << " element " << a.id << " sample " << s;
+            }
+        }
+    };
+    expect_same(out, "after growth");
+    // A synthesis session over the grown arrangement leaves them too.
+    DetSession session(ex);
+    session.set_arrangement(out);
+    session.iterate(out.domain, 3);
+    session.finish();
+    expect_same(session.arrangement(), "after synthesis");
+}
+
+TEST(Grow, MultiSampleElementsKeepTheirShapeAndDoNotCross) {
+    const Exemplar ex = example("sticks_2d");
+    const Arrangement out = grown(ex, ex.domain.scaled(2.0));
+    EXPECT_GT(out.elements.size(), 2 * ex.elements.size());
+    // Every element is a rigid copy of an exemplar element of its type: the same lengths
+    // between consecutive samples.
+    std::vector<double> length(ex.types.size(), 0.0);
+    for (const Element& e : ex.elements)
+        length[e.type] = norm(ex.samples[e.first_sample + 1].p - ex.samples[e.first_sample].p);
+    for (const Element& e : out.elements) {
+        const double l = norm(out.samples[e.first_sample + 1].p - out.samples[e.first_sample].p);
+        EXPECT_NEAR(l, length[e.type], 0.35 * length[e.type]);
+    }
+    expect_no_crowding(ex, out, "sticks");
+    EXPECT_GE(inside_fraction(out), 0.995);
+}
+
+TEST(Grow, ThreeDimensionalRodsStayInsideTheirRegion) {
+    const Exemplar ex = example("rods_3d");
+    const Domain region = ex.domain.scaled(1.6);
+    const Arrangement out = grown(ex, region);
+    EXPECT_GT(out.elements.size(), 2 * ex.elements.size());
+    for (const Sample& s : out.samples) EXPECT_TRUE(region.inside(s.p)) << s.p.x << " " << s.p.y << " " << s.p.z;
+    expect_no_crowding(ex, out, "rods");
+}
+
+TEST(Grow, GrowByACountAndStepOutward) {
+    const Exemplar ex = example("poisson_disk_2d");
+    Grower g(ex);
+    const GrowReport r = g.grow(500);
+    EXPECT_NEAR(static_cast<double>(g.arrangement().elements.size()), 500.0, 60.0);
+    EXPECT_GE(r.added, 400);
+    const size_t before = g.arrangement().elements.size();
+    const GrowReport s = g.step();
+    EXPECT_EQ(s.rounds, 1);
+    EXPECT_GT(g.arrangement().elements.size(), before);
+    EXPECT_FALSE(g.horizon().empty());
+    expect_no_crowding(ex, g.arrangement(), "count and step");
+}
+
+TEST(Grow, TheRoundBoundIsReported) {
+    const Exemplar ex = example("poisson_disk_2d");
+    GrowOptions o;
+    o.max_rounds = 2;
+    Grower g(ex, o);
+    const GrowReport r = g.grow(ex.domain.scaled(6.0));
+    EXPECT_TRUE(r.bound_hit);
+    EXPECT_FALSE(r.covered);
+    EXPECT_EQ(r.rounds, 2);
+}
+
+TEST(Grow, TheTreeSearchChoiceGrowsACleanPattern) {
+    const Exemplar ex = example("two_class_2d");
+    GrowOptions o;
+    o.choice = GrowChoice::mcts;
+    const Arrangement out = grown(ex, ex.domain.scaled(2.0), o);
+    EXPECT_GT(out.elements.size(), 3 * ex.elements.size());
+    expect_no_crowding(ex, out, "mcts");
+    EXPECT_GE(inside_fraction(out), 0.995);
+}
+
+TEST(Grow, TheSameSeedGivesTheSameArrangementForAnyThreadCount) {
+    const Exemplar ex = example("two_class_2d");
+    std::vector<Arrangement> outs;
+    for (int threads : {1, 2, 3}) {
+        GrowOptions o;
+        o.threads = threads;
+        o.seed = 7;
+        outs.push_back(grown(ex, ex.domain.scaled(2.0), o));
+    }
+    for (size_t k = 1; k < outs.size(); ++k) {
+        ASSERT_EQ(outs[k].samples.size(), outs[0].samples.size());
+        for (size_t s = 0; s < outs[0].samples.size(); ++s) {
+            EXPECT_EQ(outs[k].samples[s].p.x, outs[0].samples[s].p.x);
+            EXPECT_EQ(outs[k].samples[s].p.y, outs[0].samples[s].p.y);
+        }
+    }
+}
+
+TEST(Grow, BadInputIsAClearError) {
+    const Exemplar ex = example("two_class_2d");
+    auto kind_of = [](auto&& call) {
+        try {
+            call();
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+            return e.kind();
+        }
+        ADD_FAILURE() << "no error";
+        return ErrorKind::io;
+    };
+    EXPECT_EQ(kind_of([&] { Grower(ex).grow(Domain::box({0, 0, 0}, {0, 5, 0}, 2)); }), ErrorKind::domain);
+    EXPECT_EQ(kind_of([&] { Grower(ex).grow(0); }), ErrorKind::option);
+    EXPECT_EQ(kind_of([&] {
+                  Grower g(ex);
+                  g.grow(ex.domain);
+                  g.grow(Domain::box({100, 100, 0}, {110, 110, 0}, 2));
+              }),
+              ErrorKind::input);
+    EXPECT_EQ(kind_of([&] {
+                  Arrangement other = synthesize_det(example("poisson_disk_2d"), example("poisson_disk_2d").domain);
+                  Grower(ex).set_arrangement(other);
+              }),
+              ErrorKind::input);
+    EXPECT_EQ(kind_of([&] {
+                  GrowOptions o;
+                  o.energy_factor = 0.0;
+                  Grower(ex, o);
+              }),
+              ErrorKind::option);
+    EXPECT_EQ(kind_of([&] { Grower(ex).grow(example("rods_3d").domain); }), ErrorKind::domain);
+}
