@@ -80,9 +80,14 @@ std::vector<Violation> find_violations(const Exemplar& data, const PointView& vi
     // Per point and type: the nearest point of another element of that type within reach.
     std::vector<int> nearest(static_cast<size_t>(n) * types, -1);
     std::vector<double> distance(static_cast<size_t>(n) * types, kInf);
+    // Each point looks only as far as its own type's bounds reach: a violation is closer than
+    // its pair's tail distance, and the points beyond it rank after every violation, so
+    // leaving them out changes no rank (a rare big class no longer makes everyone look far).
+    std::vector<double> type_reach(types);
+    for (int a = 0; a < types; ++a) type_reach[a] = tails.reach(a, o.tail);
     parallel_for(n, resolve_threads(o.threads), [&](int begin, int end, int) {
         for (int i = begin; i < end; ++i)
-            grid.for_each_within(view.p[i], reach, [&](int j, double d2) {
+            grid.for_each_within(view.p[i], type_reach[type_of(i)], [&](int j, double d2) {
                 if (view.owner[j] == view.owner[i]) return;
                 const size_t slot = static_cast<size_t>(i) * types + type_of(j);
                 const double d = std::sqrt(d2);
@@ -224,6 +229,13 @@ double NearestDistanceTails::reach(double tail) const {
     double r = 0.0;
     for (const auto& v : sorted_)
         if (!v.empty()) r = std::max(r, lower_quantile(v, bounded_tail(v, tail)));
+    return r;
+}
+
+double NearestDistanceTails::reach(int a, double tail) const {
+    double r = 0.0;
+    for (int b = 0; b < types_; ++b)
+        if (const auto& v = distances(a, b); !v.empty()) r = std::max(r, lower_quantile(v, bounded_tail(v, tail)));
     return r;
 }
 

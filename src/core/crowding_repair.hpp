@@ -51,6 +51,8 @@ public:
     double quantile(int a, int b, double u) const;
     // The largest distance any repair bound can ask for: the `tail` quantile over all pairs.
     double reach(double tail) const;
+    // The same for the pairs (a, *): as far as a point of type a has to look.
+    double reach(int a, double tail) const;
     // The smallest exemplar distance of (a, b) or (b, a), or 0 when neither is known:
     // closer than this two points of elements of these types never are.
     double hard_core(int a, int b) const;

@@ -40,7 +40,7 @@ int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain*
     if (part.dimension == 2) blo.z = bhi.z = 0.0;
     const Domain around = Domain::box(blo, bhi, part.dimension);
     core::CrowdingRepairOptions options;
-    options.threads = 1;  // a round's part is small; the rounds' other steps are parallel
+    options.threads = g.threads;  // the same result for any count
     const core::CrowdingRepairReport report = core::repair_crowding(part, region ? *region : around, g.bounds, options);
     for (size_t k = 0; k < movable.size(); ++k) {
         const Element& e = part.elements[k];
