@@ -287,6 +287,63 @@ def noodles_2d():
           "without touching; centroids in a 12 x 12 window of a periodic pattern.")
 
 
+def membrane_3d():
+    """A lipid bilayer like the membranes of on-demand growth (seed 003, Figures 7-9): two
+    leaflets of lipids (a head and a three-sample tail pointing to the mid-plane, slightly
+    tilted), channel proteins spanning both leaflets (five samples on a vertical axis), and
+    a few small molecules at the head groups: the rare class. Periodic in x and y."""
+    rng = random.Random(31)
+    size = [9.0, 9.0, 6.0]
+    periodic = (True, True, False)
+    mid = size[2] / 2
+
+    def far(p, others, d):
+        return all(math.sqrt(sum(x * x for x in periodic_delta(p, q, size, periodic))) >= d for q in others)
+
+    els = []
+    proteins = []
+    for _ in range(10000):
+        if len(proteins) >= 3:
+            break
+        c = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), mid]
+        if far(c, proteins, 3.6):
+            proteins.append(c)
+    for c in proteins:
+        pts = [[c[0], c[1], mid + (t - 2) * 0.9] for t in range(5)]
+        els.append({"type": "channel", "samples": [[r4(x) for x in p] for p in pts], "radius": 0.6})
+    for side in (1, -1):
+        heads = []
+        for _ in range(200000):
+            if len(heads) >= 100:
+                break
+            h = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), mid + side * 1.9]
+            if far([h[0], h[1], mid], proteins, 1.25) and far(h, heads, 0.78):
+                heads.append(h)
+        for h in heads:
+            tilt, yaw = rng.gauss(0, 0.12), rng.uniform(0, 2 * math.pi)
+            d = [math.sin(tilt) * math.cos(yaw), math.sin(tilt) * math.sin(yaw), -side * math.cos(tilt)]
+            pts = [[h[k] + t * 0.55 * d[k] for k in range(3)] for t in range(4)]
+            els.append({"type": "lipid", "samples": [[r4(x) for x in p] for p in pts], "radius": 0.3})
+    heads = [e["samples"][0] for e in els if e["type"] == "lipid"]
+    molecules = []
+    for _ in range(100000):
+        if len(molecules) >= 12:
+            break
+        side = rng.choice((1, -1))
+        m = [rng.uniform(0, size[0]), rng.uniform(0, size[1]), mid + side * rng.uniform(2.5, 2.8)]
+        if far(m, heads, 0.55) and far(m, molecules, 1.5):
+            molecules.append(m)
+    for m in molecules:
+        els.append({"type": "molecule", "samples": [[r4(x) for x in m]], "radius": 0.2})
+    write("membrane_3d", 3, size,
+          [{"name": "lipid", "rigid": True, "color": "#e8d8a0"},
+           {"name": "channel", "rigid": True, "color": "#3f7fbf"},
+           {"name": "molecule", "rigid": True, "color": "#d04040"}], els,
+          "A lipid bilayer in a 9 x 9 x 6 window (periodic in x and y): two leaflets of lipids of "
+          "4 samples (head and tail toward the mid-plane z = 3), 3 channel proteins of 5 samples "
+          "spanning both leaflets, 12 small molecules at the head groups (the rare class).")
+
+
 if __name__ == "__main__":
     poisson_disk_2d()
     hex_jittered_2d()
@@ -298,3 +355,4 @@ if __name__ == "__main__":
     blob_mesh()
     plum_stack_2d()
     noodles_2d()
+    membrane_3d()

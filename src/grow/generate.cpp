@@ -46,7 +46,7 @@ std::vector<Candidate> propose(Grower::Impl& g, double extent) {
             const OutElement& he = g.out[h];
             const Quat frame = g.frame_at(he.p);
             gather_output(g, he.p, frame, h, gather, s);
-            const Match best = best_match(g, he.type, he.match >= 0 ? he.match : he.source,
+            const Match best = best_match(g, he.type, he.match >= 0 ? he.match : he.source, he.source,
                                           count_within(s, g.metric.params.radius), s);
             if (best.input < 0) continue;
             matched[k] = best.input;
@@ -283,7 +283,7 @@ int drop_high_energy(Grower::Impl& g, int first, double t, double& mean, std::ve
         for (int k = begin; k < end; ++k) {
             const OutElement& e = g.out[first + k];
             gather_output(g, e.p, e.frame, first + k, g.metric.params.radius, s);
-            const Match m = best_match(g, e.type, e.source, static_cast<int>(s.entries.size()), s);
+            const Match m = best_match(g, e.type, e.source, e.source, static_cast<int>(s.entries.size()), s);
             energy[k] = m.mean();
             matched[k] = m.input;
         }

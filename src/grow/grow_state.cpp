@@ -16,6 +16,8 @@ namespace {
 // Candidates closer than this share of the spacing always merge, whatever the exemplar's
 // hard core (a clustered exemplar has close pairs; two proposals for one place are not one).
 constexpr double kMergeFloor = 0.35;
+// The share of the exemplar's nearest-neighbour distances (per type pair) below the merge distance.
+constexpr double kMergeQuantile = 0.1;
 
 const Exemplar& validated(const Exemplar& exemplar) {
     exemplar.validate("exemplar");
@@ -86,7 +88,17 @@ Quat Grower::Impl::frame_at(const Vec3& p) const {
 }
 
 double Grower::Impl::hard_core(int a, int b) const {
-    return std::max(bounds.centroids.hard_core(a, b), kMergeFloor * metric.params.spacing);
+    double d = bounds.centroids.hard_core(a, b);
+    if (bounds.has_samples) {
+        // Multi-sample elements: the closest centroids of the exemplar come from particular
+        // poses (two tilted lipids whose tails lean together) and the samples' own hard core
+        // is checked anyway; what keeps misaligned patches from both staying and
+        // overfilling is the exemplar's kMergeQuantile-th closest centroid distance.
+        const core::NearestDistanceTails& t = bounds.centroids;
+        if (!t.distances(a, b).empty()) d = std::max(d, t.quantile(a, b, kMergeQuantile));
+        if (!t.distances(b, a).empty()) d = std::max(d, t.quantile(b, a, kMergeQuantile));
+    }
+    return std::max(d, kMergeFloor * metric.params.spacing);
 }
 
 double Grower::Impl::sample_core(int a, int b) const {

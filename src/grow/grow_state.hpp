@@ -89,8 +89,9 @@ struct Grower::Impl {
 
     // Local frame of the field at p (identity without one).
     Quat frame_at(const Vec3& p) const;
-    // Hard-core distance between types a and b, with a floor so that coincident
-    // candidates always merge.
+    // Hard-core distance between the centroids of types a and b, with a floor so that
+    // coincident candidates always merge (for multi-sample elements a low quantile of the
+    // exemplar's distances, grow_state.cpp).
     double hard_core(int a, int b) const;
     // Hard-core distance between samples of different elements of types a and b (0 when the
     // exemplar has no multi-sample elements).

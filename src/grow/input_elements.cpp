@@ -50,11 +50,25 @@ void gather_input_neighborhoods(InputElements& in, const Exemplar& ex, double re
 // at the exemplar's border copies a cut patch, and growth there stops.
 constexpr int kMinPool = 8;
 
+// How far an element lies from the exemplar's border, for the pools. A box exemplar thinner
+// than a patch along an axis (a layer on a floor, a membrane) is the pattern's whole extent
+// there, not a cut of it: that axis's faces do not count, or no element would have a
+// whole patch and every match would fall back to the border elements, whose cut patches
+// copy the exemplar and stop at its sides.
+double pool_margin(const Exemplar& ex, const Vec3& c, double patch) {
+    if (ex.domain.kind() != Domain::Kind::box) return ex.domain.distance_to_boundary(c);
+    const Box b = ex.domain.bounds();
+    double margin = 1e300;
+    for (int k = 0; k < ex.dimension; ++k)
+        if (b.hi[k] - b.lo[k] >= 2.0 * patch) margin = std::min({margin, c[k] - b.lo[k], b.hi[k] - c[k]});
+    return margin;
+}
+
 void choose_pools(InputElements& in, const Exemplar& ex, const Metric& m) {
     const int types = static_cast<int>(ex.types.size());
     in.pool.assign(types, {});
     std::vector<double> margin(in.size());
-    for (int i = 0; i < in.size(); ++i) margin[i] = ex.domain.distance_to_boundary(in.centroid[i]);
+    for (int i = 0; i < in.size(); ++i) margin[i] = pool_margin(ex, in.centroid[i], m.patch_radius);
     for (int t = 0; t < types; ++t) {
         int of_type = 0;
         for (int i = 0; i < in.size(); ++i) of_type += in.type[i] == t;
@@ -86,8 +100,9 @@ void build_similarity_sets(InputElements& in, const Metric& m, int k, int thread
             scored.clear();
             for (const int j : in.pool[in.type[i]]) {
                 if (j == i) continue;
-                const double c = det::match_greedy(in.neighbors(i), in.within_r[i], in.neighbors(j), in.metric_count[j],
-                                                   m.params, scratch, nullptr, 1e300);
+                const double c = in.shape_distance(i, j) +
+                                 det::match_greedy(in.neighbors(i), in.within_r[i], in.neighbors(j),
+                                                   in.metric_count[j], m.params, scratch, nullptr, 1e300);
                 scored.emplace_back(c, j);
             }
             const int keep = std::min<int>(k, static_cast<int>(scored.size()));
@@ -118,11 +133,26 @@ int InputElements::nearest_in_pool(int t, const Vec3& p, double max_distance) co
     return k < 0 ? -1 : pool[t][k];
 }
 
+double InputElements::shape_distance(int a, int b) const {
+    if (a < 0 || b < 0) return 0.0;
+    const int n = layout_start[a + 1] - layout_start[a];
+    if (n <= 1 || n != layout_start[b + 1] - layout_start[b]) return 0.0;
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        const Vec3 d = layout[layout_start[a] + k] - layout[layout_start[b] + k];
+        sum += dot(d, d);
+    }
+    return sum / n;
+}
+
 InputElements index_input_elements(const Exemplar& exemplar, const Metric& metric, int k, int threads) {
     InputElements in;
+    in.layout_start.push_back(0);
     for (const Element& e : exemplar.elements) {
         in.centroid.push_back(element_centroid(exemplar, e));
         in.type.push_back(e.type);
+        for (int s = 0; s < e.sample_count; ++s) in.layout.push_back(exemplar.samples[e.first_sample + s].p - in.centroid.back());
+        in.layout_start.push_back(static_cast<int>(in.layout.size()));
     }
     const double reach = std::max(metric.patch_radius, metric.params.radius + std::sqrt(metric.params.cap2)) +
                          std::sqrt(metric.threshold2);

@@ -36,11 +36,19 @@ struct InputElements {
     std::vector<std::vector<Vec3>> pool_position;
     std::vector<core::SpatialGrid> pool_grid;
     std::vector<int> sim_start, sim;      // k-coherence similarity sets (CSR), within the pools
+    // Each element's samples relative to its centroid (CSR): its shape and heading.
+    std::vector<Vec3> layout;
+    std::vector<int> layout_start;
 
     int size() const { return static_cast<int>(centroid.size()); }
     const det::NeighborEntry* neighbors(int i) const { return nb.data() + nb_start[i]; }
     // The pool element of type t nearest to p within max_distance, or -1.
     int nearest_in_pool(int t, const Vec3& p, double max_distance) const;
+    // Mean squared distance between the corresponding samples of two elements' layouts
+    // (0 for single-sample elements, a < 0 or different sample counts): centroids alone
+    // cannot tell a lipid of the upper leaflet from a flipped one of the lower, or two
+    // headings of a stick, when their neighbourhoods within r look alike.
+    double shape_distance(int a, int b) const;
 };
 
 // Builds the index; the similarity sets pair every two pool elements of one type on

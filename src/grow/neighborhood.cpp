@@ -42,7 +42,7 @@ int count_within(const Scratch& s, double r) {
     return m;
 }
 
-Match best_match(const Grower::Impl& g, int type, int own, int m, Scratch& s) {
+Match best_match(const Grower::Impl& g, int type, int own, int shape_of, int m, Scratch& s) {
     const InputElements& in = g.input;
     s.candidates.clear();
     auto add_with_set = [&](int c) {
@@ -52,6 +52,11 @@ Match best_match(const Grower::Impl& g, int type, int own, int m, Scratch& s) {
             if (in.type[in.sim[k]] == type) s.candidates.push_back(in.sim[k]);
     };
     add_with_set(own >= 0 ? in.nearest_in_pool(type, in.centroid[own], g.metric.params.spacing) : -1);
+    // Where the element was copied from: coherent with its own layout even when its
+    // neighbourhood is still one-sided (a frontier element, whose few neighbours fit
+    // mirror places of the exemplar as well).
+    const int from = shape_of >= 0 ? in.nearest_in_pool(type, in.centroid[shape_of], g.metric.params.spacing) : -1;
+    add_with_set(from);
     for (int j = 0; j < m; ++j) {
         const int known = g.out[s.entries[j].element].match;
         if (known < 0) continue;
@@ -69,9 +74,15 @@ Match best_match(const Grower::Impl& g, int type, int own, int m, Scratch& s) {
     Match best;
     best.neighbors = m;
     double best_cost = 1e300;
+    if (from >= 0) {  // tried first, so that it wins ties
+        s.candidates.insert(s.candidates.begin(), from);
+    }
     for (const int c : s.candidates) {
-        const double cost = det::match_greedy(s.entries.data(), m, in.neighbors(c), in.metric_count[c],
-                                              g.metric.params, s.match, nullptr, best_cost);
+        // The element's own shape against the candidate's, then its neighbourhood (Eq. 3).
+        const double shape = in.shape_distance(shape_of, c);
+        if (shape >= best_cost) continue;
+        const double cost = shape + det::match_greedy(s.entries.data(), m, in.neighbors(c), in.metric_count[c],
+                                                      g.metric.params, s.match, nullptr, best_cost - shape);
         if (cost < best_cost) best_cost = cost, best.input = c;
     }
     best.energy = best.input >= 0 ? best_cost : 0.0;

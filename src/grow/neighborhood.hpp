@@ -21,8 +21,10 @@ struct Match {
 // s.entries, those within r): k-coherence candidates from the element's own last match
 // (`own`, -1 if none) and from each neighbour's match shifted by its offset, with their
 // similarity sets. With no candidate (no neighbour knows its match), a bounded stride of
-// the type's pool is tried.
-Match best_match(const Grower::Impl& g, int type, int own, int m, Scratch& s);
+// the type's pool is tried. `shape` is the input element whose layout the output element
+// copies (-1 for none): a candidate's layout differing from it adds
+// InputElements::shape_distance to the cost.
+Match best_match(const Grower::Impl& g, int type, int own, int shape, int m, Scratch& s);
 
 // Number of leading entries of s.entries within distance r.
 int count_within(const Scratch& s, double r);

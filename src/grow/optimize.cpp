@@ -75,7 +75,7 @@ void predict(Grower::Impl& g, const Unknowns& u, std::vector<std::vector<Predict
             const Quat frame = g.frame_at(e.p);
             gather_output(g, e.p, frame, v, g.metric.params.radius, s);
             const int m = static_cast<int>(s.entries.size());
-            const Match best = best_match(g, e.type, e.match, m, s);
+            const Match best = best_match(g, e.type, e.match, e.source, m, s);
             if (best.input < 0) continue;
             matched[c] = best.input;
             mean_energy[c] = best.mean();

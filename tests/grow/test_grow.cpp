@@ -5,6 +5,7 @@
 // round bound is reported; bad input is a clear error; the thread count changes nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -225,6 +226,33 @@ TEST(Grow, ThreeDimensionalRodsStayInsideTheirRegion) {
     EXPECT_GT(out.elements.size(), 2 * ex.elements.size());
     for (const Sample& s : out.samples) EXPECT_TRUE(region.inside(s.p)) << s.p.x << " " << s.p.y << " " << s.p.z;
     expect_no_crowding(ex, out, "rods");
+}
+
+// The bilayer of examples/membrane_3d.json: as many lipids per leaflet as the exemplar has
+// per area, every head on its leaflet's outer side (centroids alone cannot tell a lipid
+// from a flipped one), the small molecules (the rare class) in proportion.
+TEST(Grow, AMembraneKeepsItsLeafletsAndItsSmallMolecules) {
+    const Exemplar ex = example("membrane_3d");
+    const Box b = ex.domain.bounds();
+    const Domain region = Domain::box(b.lo, b.lo + Vec3{2 * b.size().x, 2 * b.size().y, b.size().z}, 3);
+    const Arrangement out = grown(ex, region);
+    const double mid = b.center().z;
+    const int lipid = ex.find_type("lipid"), molecule = ex.find_type("molecule");
+    auto count = [](const std::vector<Element>& elements, int type) {
+        return static_cast<double>(std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return e.type == type; }));
+    };
+    EXPECT_NEAR(count(out.elements, lipid), 4.0 * count(ex.elements, lipid), 0.1 * 4.0 * count(ex.elements, lipid));
+    int flipped = 0;
+    for (const Element& e : out.elements) {
+        if (e.type != lipid) continue;
+        const double head = out.samples[e.first_sample].p.z, centre = e.position.z;
+        flipped += (head - centre) * (centre - mid) < 0.0;
+    }
+    EXPECT_LE(flipped, static_cast<int>(0.01 * count(out.elements, lipid)));
+    const double want = count(ex.elements, molecule) / ex.elements.size();
+    EXPECT_NEAR(count(out.elements, molecule) / out.elements.size(), want, 0.2 * want);
+    for (const Sample& s : out.samples) EXPECT_TRUE(region.inside(s.p));
+    expect_no_crowding(ex, out, "membrane");
 }
 
 TEST(Grow, GrowByACountAndStepOutward) {
