@@ -65,7 +65,7 @@ public:
         const tessera::Vec3 size = b.hi - b.lo;
         const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(shots_.size()))));
         const int rows = (static_cast<int>(shots_.size()) + columns - 1) / columns;
-        const double gap = 0.08 * std::max(size.x, size.y);
+        const double gap = 0.15 * std::max(size.x, size.y);
         tessera::Exemplar sheet;
         sheet.dimension = 2;
         sheet.types = shots_.front().types;
