@@ -7,6 +7,7 @@
 //   B3-spaghetti  deformable 24-sample noodles filling a plate mesh, 10 iterations
 //   B4-*      the PCF method (pcf_scenarios.cpp): examples/pcf/ and shared real datasets
 //   B5        both methods on every shared real dataset (field_data_scenarios.cpp)
+//   B6-*      on-demand growth, 10,000 to 1,000,000 elements, 2D and 3D (grow_scenarios.cpp)
 // Usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]
 // Prints a Markdown table (median of repeated runs for the small scenarios).
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "field_data_scenarios.hpp"
+#include "grow_scenarios.hpp"
 #include "pcf_scenarios.hpp"
 #include "tessera/tessera.hpp"
 
@@ -39,15 +41,17 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 }
 
 // Runs every scenario and prints their tables (defined after main).
-void run(const std::string& dir, bool quick, int threads, const std::string& shared);
+void run(const std::string& dir, bool quick, int threads, const std::string& shared, const std::string& only);
 
 }  // namespace
 
 int main(int argc, char** argv) {
     const char* usage =
-        "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]\n"
-        "Runs benchmarks B1-B5 (docs/benchmarks.md) and prints Markdown tables; --quick skips B1-large,\n"
-        "--shared names the real point patterns' directory (default EXAMPLES_DIR/../tests/data/spatstat).\n";
+        "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR] [--only B1|B4|B5|B6]\n"
+        "Runs benchmarks B1-B6 (docs/benchmarks.md) and prints Markdown tables; --quick skips B1-large\n"
+        "and B6's 1,000,000-element runs,\n"
+        "--shared names the real point patterns' directory (default EXAMPLES_DIR/../tests/data/spatstat),\n"
+        "--only runs one table (B1 = B1-B3).\n";
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::fprintf(argc < 2 ? stderr : stdout, "%s", usage);
         return argc < 2 ? 2 : 0;
@@ -56,18 +60,20 @@ int main(int argc, char** argv) {
     bool quick = false;
     int threads = 0;
     std::string shared = dir + "/../tests/data/spatstat";
+    std::string only;
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--quick") quick = true;
         else if (a == "--threads" && i + 1 < argc) threads = std::atoi(argv[++i]);
         else if (a == "--shared" && i + 1 < argc) shared = argv[++i];
+        else if (a == "--only" && i + 1 < argc) only = argv[++i];
         else {
             std::fprintf(stderr, "tessera_bench: unknown argument '%s'\n%s", a.c_str(), usage);
             return 2;
         }
     }
     try {
-        run(dir, quick, threads, shared);
+        run(dir, quick, threads, shared, only);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tessera_bench: error: %s\n", e.what());
         return 1;
@@ -77,7 +83,8 @@ int main(int argc, char** argv) {
 
 namespace {
 
-void run(const std::string& dir, bool quick, int threads, const std::string& shared) {
+void run(const std::string& dir, bool quick, int threads, const std::string& shared, const std::string& only) {
+    auto wanted = [&](const char* table) { return only.empty() || only == table; };
     std::vector<Scenario> scenarios = {
         {"B1", "poisson_disk_2d.json", 1000, 5, false},
         {"B1-large", "poisson_disk_2d.json", 100000, 1, false},
@@ -86,10 +93,12 @@ void run(const std::string& dir, bool quick, int threads, const std::string& sha
         {"B3-spaghetti", "scenes/spaghetti_3d.json", 0, 1, false, "scenes/plate.obj", false},
     };
     if (quick) scenarios.erase(scenarios.begin() + 1);
+    if (!wanted("B1")) scenarios.clear();
 
-    std::printf("| scenario | exemplar | elements | samples | iterations | threads | total s | s / iteration | "
+    if (!scenarios.empty())
+        std::printf("| scenario | exemplar | elements | samples | iterations | threads | total s | s / iteration | "
                 "us per element-iteration | final energy | domain setup s |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    if (!scenarios.empty()) std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const auto& sc : scenarios) {
         const Exemplar ex = load(dir + "/" + sc.exemplar);
         const int grown_axes = sc.keep_height ? 2 : ex.dimension;
@@ -119,8 +128,9 @@ void run(const std::string& dir, bool quick, int threads, const std::string& sha
                     out.stats.final_energy, setup);
         std::fflush(stdout);
     }
-    tessera_bench::run_pcf_scenarios(dir, shared, threads);
-    tessera_bench::run_field_data_scenarios(shared, threads);
+    if (wanted("B4")) tessera_bench::run_pcf_scenarios(dir, shared, threads);
+    if (wanted("B5")) tessera_bench::run_field_data_scenarios(shared, threads);
+    if (wanted("B6")) tessera_bench::run_grow_scenarios(dir, quick, threads);
 }
 
 }  // namespace
