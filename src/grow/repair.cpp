@@ -2,15 +2,24 @@
 #include "grow/repair.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
 #include <unordered_set>
 
 #include "core/crowding_repair.hpp"
 
 namespace tessera::grow {
 
-int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain* region) {
-    if (movable.empty()) return 0;
-    const double reach = g.reach + 2.0 * g.extent + g.metric.params.spacing;
+namespace {
+
+// Tiles of this many reaches: a part's bounding box stays compact whatever the horizon's
+// shape (a ring around a large grown region would make the repair's grid cover the whole
+// region, and its cost grow faster than the output).
+constexpr double kTileReaches = 8.0;
+
+// Repairs one part: `movable`, and the elements within reach of it locked in the copy.
+int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* region, double reach) {
     // The movable elements, then the fixed ones within reach of them (locked in the copy).
     std::vector<int> members = movable;
     std::unordered_set<int> in(movable.begin(), movable.end());
@@ -50,6 +59,23 @@ int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain*
         g.move(movable[k], c * (1.0 / e.sample_count));
     }
     return report.remaining;
+}
+
+}  // namespace
+
+int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain* region) {
+    if (movable.empty()) return 0;
+    const double reach = g.reach + 2.0 * g.extent + g.metric.params.spacing;
+    const double tile = kTileReaches * reach;
+    std::map<std::array<long long, 3>, std::vector<int>> tiles;  // ordered: a fixed order of parts
+    for (const int v : movable) {
+        std::array<long long, 3> key{0, 0, 0};
+        for (int k = 0; k < g.metric.dimension; ++k) key[k] = static_cast<long long>(std::floor(g.out[v].p[k] / tile));
+        tiles[key].push_back(v);
+    }
+    int remaining = 0;
+    for (const auto& [key, part] : tiles) remaining += repair_part(g, part, region, reach);
+    return remaining;
 }
 
 }  // namespace tessera::grow
