@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "option_values.hpp"
 #include "tessera/det.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -18,24 +19,6 @@ namespace py = pybind11;
 
 namespace tessera_python {
 namespace {
-
-[[noreturn]] void bad(const std::string& message) { throw tessera::Error(tessera::ErrorKind::option, message); }
-
-template <class T>
-T get(const py::handle& value, const std::string& name, const char* what) {
-    try {
-        return value.cast<T>();
-    } catch (const py::cast_error&) {
-        bad(name + " must be " + what + ", got " + std::string(py::repr(value)));
-    }
-}
-
-double number(const py::handle& v, const std::string& name) { return get<double>(v, name, "a number"); }
-int integer(const py::handle& v, const std::string& name) {
-    if (py::isinstance<py::float_>(v)) bad(name + " must be an integer, got " + std::string(py::repr(v)));
-    return get<int>(v, name, "an integer");
-}
-std::string text(const py::handle& v, const std::string& name) { return get<std::string>(v, name, "a string"); }
 
 void apply_det(tessera::DetOptions& o, const std::string& key, const py::handle& v, int dimension) {
     if (key == "seed") o.seed = get<std::uint64_t>(v, key, "an unsigned 64-bit integer");
@@ -91,37 +74,6 @@ void apply_pcf(tessera::PcfSynthOptions& o, const std::string& key, const py::ha
     else bad("unknown option '" + key + "' for method 'pcf'");
 }
 
-// Wraps a Python callable as a tessera::Progress. The first exception it raises is kept
-// and re-raised once the library has unwound (the library sees a cancellation).
-struct PythonProgress {
-    py::object callback;
-    std::shared_ptr<std::optional<py::error_already_set>> raised =
-        std::make_shared<std::optional<py::error_already_set>>();
-
-    tessera::Progress progress() const {
-        if (callback.is_none()) return {};
-        // The library may copy the std::function without the GIL: capture only shared_ptrs,
-        // whose copies do not touch Python reference counts.
-        auto call = std::make_shared<py::object>(callback);
-        return [call, raised = raised](const tessera::ProgressEvent& event) -> bool {
-            py::gil_scoped_acquire gil;
-            try {
-                py::dict d;
-                d["stage"] = event.stage;
-                d["iteration"] = event.iteration;
-                d["iterations"] = event.iterations;
-                d["energy"] = event.energy;
-                d["elapsed"] = event.elapsed_s;
-                d["fraction"] = event.fraction;
-                const py::object answer = (*call)(d);
-                return !(py::isinstance<py::bool_>(answer) && !answer.cast<bool>());
-            } catch (py::error_already_set& e) {
-                raised->emplace(std::move(e));
-                return false;
-            }
-        };
-    }
-};
 
 tessera::Arrangement run(const std::function<tessera::Arrangement(const tessera::Progress&)>& method,
                          const py::object& callback) {

@@ -18,6 +18,8 @@ void bind_domain(pybind11::module_& m);
 void bind_errors(pybind11::module_& m);
 // synthesize_det / synthesize_pcf with options, progress and the GIL released (bind_synthesize.cpp).
 void bind_synthesize(pybind11::module_& m);
+// Grower (on-demand growth) with options, progress and the GIL released (bind_grow.cpp).
+void bind_grow(pybind11::module_& m);
 // load, save, render, metrics, the PCF model (bind_io.cpp, bind_analysis.cpp).
 void bind_io(pybind11::module_& m);
 void bind_analysis(pybind11::module_& m);

@@ -10,6 +10,8 @@ with elements whose local arrangement looks like the exemplar's everywhere.
     out = tessera.synthesize(ex, domain="box:40,40", seed=7)
     tessera.save(out, "forest.usda")
 
+or grow one on demand, next to what exists, with :class:`Grower`.
+
 Data travel as numpy arrays (see :class:`Exemplar`) or as files (:func:`load`,
 :func:`save`; formats by extension as in the CLI, docs/format.md). Options of
 :func:`synthesize` have the names and defaults of ``tessera synth``'s flags, with
@@ -21,6 +23,7 @@ and several syntheses may run at once from different threads.
 """
 
 import json as _json
+import numbers as _numbers
 import os as _os
 
 from . import _tessera
@@ -30,7 +33,7 @@ from .errors import (Cancelled, DomainError, FileError, InputError, InternalErro
 
 __version__ = _tessera.version
 __all__ = [
-    "Arrangement", "Cancelled", "Domain", "DomainError", "Exemplar", "FileError", "InputError",
+    "Arrangement", "Cancelled", "Domain", "DomainError", "Exemplar", "FileError", "Grower", "InputError",
     "InternalError", "OptionError", "PcfModel", "TesseraError", "analyze", "exemplar", "load",
     "metrics", "pair_correlation", "render", "save", "synthesize",
 ]
@@ -194,6 +197,100 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
                           % type(exemplar).__name__)
     return _tessera.synthesize(exemplar, _as_domain(domain, exemplar, scale, "domain"), method, options,
                                progress)
+
+
+class Grower(_tessera.Grower):
+    """On-demand growth (`tessera grow`): an arrangement grown outward along its horizon,
+    next to elements that already exist and never move, for when the output domain is not
+    known in advance (a game world, a brush).
+
+        g = tessera.Grower(ex, seed=3)
+        g.grow(ex.domain.scaled(2.0))      # until the region takes no more elements
+        g.grow(200)                        # then about 200 more, outward
+        out = g.arrangement
+
+    exemplar  an Exemplar (from tessera.exemplar or tessera.load) or a path to one.
+    seed      seed of every random draw; the same exemplar, options and seed give the same
+              arrangement whatever `threads` is (0 = all hardware threads).
+    choice    how a round chooses among its candidates: "patch" (copy the input patch that
+              fits best at each horizon element, then filter) or "mcts" (the paper's
+              single-player Monte-Carlo tree search, with playouts, explore, exploit).
+    radius    neighbourhood radius (0 = automatic, as for synthesize); patch_extent: the
+              copied patch's extent in radii (>= 1); threshold: the pair assignment's
+              threshold as a share of the mean spacing (0 to 1]; energy_factor: candidates
+              above this many times the round's mean energy are dropped (> 1);
+              lock_distance (radii) and band_weight: the band of the position solve behind
+              the horizon; solves per round; votes before a type changes; k of k-coherence;
+              alpha (negative = automatic); max_rounds: bound on the rounds of one grow call;
+              field: an orientation field in the --field forms ("vortex:5,5", "grid:FILE.json").
+
+    Methods: seed(center), set_arrangement(arrangement), grow(region) / grow(n), step();
+    each grow call returns a report dict (rounds, added, candidates, merged, high_energy,
+    outside, reassigned, last_made, displaced, covered, bound_hit, energy, seconds).
+    Properties: arrangement (an Arrangement), locked (E booleans), horizon (indices of the
+    current horizon's elements), radius (the radius in use), len(grower).
+
+    Raises OptionError naming the keyword (``energy_factor: must be a number > 1, got
+    0.5``), InputError for an invalid exemplar. The GIL is released while it grows; a
+    Grower serves one thread at a time (RuntimeError when another thread is using it).
+    """
+
+    def __init__(self, exemplar, *, radius=0.0, choice="patch", patch_extent=1.5, threshold=0.4,
+                 energy_factor=1.5, lock_distance=1.0, band_weight=4.0, solves=2, votes=2, k=6,
+                 alpha=-1.0, playouts=24, explore=0.5, exploit=1.0, max_rounds=10000, field=None,
+                 threads=0, seed=1):
+        exemplar = _as_data(exemplar)
+        if not isinstance(exemplar, Exemplar):
+            raise OptionError("exemplar must be a tessera.Exemplar or a file path, got %s"
+                              % type(exemplar).__name__)
+        options = dict(radius=radius, choice=choice, patch_extent=patch_extent, threshold=threshold,
+                       energy_factor=energy_factor, lock_distance=lock_distance, band_weight=band_weight,
+                       solves=solves, votes=votes, k=k, alpha=alpha, playouts=playouts, explore=explore,
+                       exploit=exploit, max_rounds=max_rounds, field=field, threads=threads, seed=seed)
+        super().__init__(exemplar, options)
+        # Text-form regions ("box:W,H") are relative to the exemplar, as for `tessera grow`.
+        self._exemplar = exemplar
+
+    def set_arrangement(self, arrangement):
+        """Start over from `arrangement` (an Arrangement or Exemplar, or a path to one), whose
+        types are matched to the exemplar's by name: its elements become locked (they never
+        move, change type or go) and are the first horizon. InputError for an unknown type
+        or a different sample count."""
+        arrangement = _as_data(arrangement)
+        if not isinstance(arrangement, Exemplar):
+            raise OptionError("arrangement must be a tessera.Arrangement, an Exemplar or a file path, got %s"
+                              % type(arrangement).__name__)
+        super().set_arrangement(arrangement)
+
+    def grow(self, target, *, progress=None):
+        """grow(region): grow until `region` takes no more elements (candidates outside it are
+        dropped); region is a Domain, (lo, hi) corners or a --region text form relative to the
+        exemplar ("box:W,H", "polygon:FILE.json", ...). An empty arrangement starts from an
+        exemplar patch at the region's centre; otherwise the region must touch it.
+        grow(n): grow by about n elements (n > 0), outward from the arrangement.
+
+        progress  optional callable, called with a dict (stage, iteration, iterations, energy,
+                  elapsed, fraction) at the start ("round", iteration -1), after each round
+                  ("round") and at the end ("done"), between rounds. Return False to cancel
+                  (tessera.Cancelled); an exception it raises cancels and propagates. The
+                  rounds done before a cancel stay in the arrangement.
+
+        Returns the report dict. Raises OptionError for n <= 0, DomainError for an empty region
+        or one of the wrong dimension, InputError for a region that does not touch the
+        arrangement. The GIL is released while it grows."""
+        if progress is not None and not callable(progress):
+            raise OptionError("progress must be callable, got %r" % (progress,))
+        if isinstance(target, _numbers.Integral) and not isinstance(target, bool):
+            return super().grow(int(target), progress)
+        if target is None or isinstance(target, bool):
+            raise OptionError("grow needs a region or a number of elements n, got %r" % (target,))
+        if isinstance(target, str):
+            return super().grow(_tessera.parse_region(target, self._exemplar), progress)
+        return super().grow(_as_domain(target, None, 1.0, "region"), progress)
+
+    def __repr__(self):
+        return "<tessera.Grower %dD, %d elements, radius %.4g>" % (self._exemplar.dimension, len(self),
+                                                                   self.radius)
 
 
 def analyze(exemplar, *, sigma=0.25, step=0.1, extent=5.0):

@@ -1,0 +1,267 @@
+// tessera::Grower for Python (on-demand growth, include/tessera/grow.hpp). As for synthesize,
+// options arrive as a dict keyed by the Python keyword names (python/tessera/__init__.py
+// fills in the library's defaults), the GIL is released while a grow call or a round runs,
+// and the progress callable is called with the GIL held. Reports are dicts.
+//
+// A Grower is not thread-safe, and releasing the GIL lets another Python thread reach the
+// same object mid-call: every method checks, with the GIL held, that no call is under way
+// on another thread. The progress callable may still read the arrangement (the library
+// calls it between rounds), as `tessera grow --round-pictures` does.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <climits>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "option_values.hpp"
+#include "tessera/grow.hpp"
+#include "tessera/option_text.hpp"
+
+namespace py = pybind11;
+
+namespace tessera_python {
+namespace {
+
+
+tessera::GrowChoice parse_choice(const std::string& choice) {
+    if (choice == "patch") return tessera::GrowChoice::patch;
+    if (choice == "mcts") return tessera::GrowChoice::mcts;
+    bad("choice must be patch or mcts, got '" + choice + "'");
+}
+
+const char* to_string(tessera::GrowChoice choice) { return choice == tessera::GrowChoice::mcts ? "mcts" : "patch"; }
+
+void apply_grow(tessera::GrowOptions& o, const std::string& key, const py::handle& v, int dimension) {
+    if (key == "seed") o.seed = get<std::uint64_t>(v, key, "an unsigned 64-bit integer");
+    else if (key == "threads") o.threads = integer(v, key);
+    else if (key == "radius") o.radius = number(v, key);
+    else if (key == "choice") o.choice = parse_choice(text(v, key));
+    else if (key == "patch_extent") o.patch_extent = number(v, key);
+    else if (key == "threshold") o.threshold = number(v, key);
+    else if (key == "energy_factor") o.energy_factor = number(v, key);
+    else if (key == "lock_distance") o.lock_distance = number(v, key);
+    else if (key == "band_weight") o.band_weight = number(v, key);
+    else if (key == "solves") o.solves = integer(v, key);
+    else if (key == "votes") o.votes = integer(v, key);
+    else if (key == "k") o.k = integer(v, key);
+    else if (key == "alpha") o.alpha = number(v, key);
+    else if (key == "playouts") o.playouts = integer(v, key);
+    else if (key == "explore") o.explore = number(v, key);
+    else if (key == "exploit") o.exploit = number(v, key);
+    else if (key == "max_rounds") o.max_rounds = integer(v, key);
+    else if (key == "field") {
+        if (!v.is_none()) o.field = tessera::OrientationField::parse(text(v, key), dimension, key);
+    } else {
+        bad("unknown option '" + key + "' for Grower");
+    }
+}
+
+// The library names a bad GrowOptions field at the start of its message ("energy_factor:
+// must be a number > 1"); the fields are spelled as the keywords, so the message already
+// names the keyword, and the value the caller gave is appended.
+[[noreturn]] void rethrow_with_value(const tessera::Error& e, const py::dict& options) {
+    const std::string message = e.what();
+    const std::size_t colon = message.find(':');
+    if (e.kind() == tessera::ErrorKind::option && colon != std::string::npos) {
+        const std::string key = message.substr(0, colon);
+        if (options.contains(key))
+            throw tessera::Error(e.kind(), message + ", got " + std::string(py::repr(options[key.c_str()])));
+    }
+    throw;
+}
+
+py::dict report_of(const tessera::GrowReport& r) {
+    py::dict d;
+    d["rounds"] = r.rounds, d["added"] = r.added, d["candidates"] = r.candidates, d["merged"] = r.merged;
+    d["high_energy"] = r.high_energy, d["outside"] = r.outside, d["reassigned"] = r.reassigned;
+    d["last_made"] = r.last_made, d["displaced"] = r.displaced, d["covered"] = r.covered;
+    d["bound_hit"] = r.bound_hit, d["energy"] = r.energy, d["seconds"] = r.seconds;
+    return d;
+}
+
+// The Grower and who is using it. `busy` and `owner` are read and written with the GIL
+// held only, so the GIL orders them.
+struct PyGrower {
+    explicit PyGrower(tessera::Grower g) : grower(std::move(g)) {}
+    tessera::Grower grower;
+    bool busy = false;
+    std::thread::id owner;
+};
+
+[[noreturn]] void busy_elsewhere() {
+    throw std::runtime_error("this Grower is in use by another thread (a Grower serves one thread at a time)");
+}
+
+// Marks the grower busy for a call that changes it; the GIL is held on entry and exit.
+class Changing {
+public:
+    explicit Changing(PyGrower& g) : g_(g) {
+        if (g_.busy) {
+            if (g_.owner != std::this_thread::get_id()) busy_elsewhere();
+            throw std::runtime_error("the progress callback cannot change the Grower it reports on");
+        }
+        g_.busy = true;
+        g_.owner = std::this_thread::get_id();
+    }
+    ~Changing() { g_.busy = false; }
+    Changing(const Changing&) = delete;
+    Changing& operator=(const Changing&) = delete;
+
+private:
+    PyGrower& g_;
+};
+
+// Reading is allowed between rounds: from no call, or from the progress callable of the
+// call under way (on that call's thread).
+const tessera::Grower& reading(const PyGrower& g) {
+    if (g.busy && g.owner != std::this_thread::get_id()) busy_elsewhere();
+    return g.grower;
+}
+
+// Runs a grow call with the GIL released and `callback` installed for its duration; the
+// callable is removed with the GIL held, so its last reference is dropped under the GIL.
+template <class Call>
+py::dict run(PyGrower& g, const py::object& callback, const Call& call) {
+    const Changing changing(g);
+    PythonProgress progress{callback};
+    struct Uninstall {
+        tessera::Grower& grower;
+        ~Uninstall() { grower.set_progress({}); }
+    } uninstall{g.grower};
+    g.grower.set_progress(progress.progress());
+    std::optional<tessera::GrowReport> report;
+    {
+        py::gil_scoped_release release;
+        try {
+            report = call(g.grower);
+        } catch (const tessera::Cancelled&) {
+            if (!*progress.raised) throw;
+        }
+    }
+    progress.rethrow();
+    return report_of(*report);
+}
+
+// The library names grow(n)'s count `elements` (the CLI's --elements); Python calls it n.
+tessera::GrowReport grow_count(tessera::Grower& grower, long long n) {
+    static const std::string library_name = "elements:";
+    if (n > INT_MAX) bad("n: must be at most " + std::to_string(INT_MAX) + ", got " + std::to_string(n));
+    try {
+        return grower.grow(static_cast<int>(std::max<long long>(n, INT_MIN)));
+    } catch (const tessera::Error& e) {
+        const std::string message = e.what();
+        if (e.kind() != tessera::ErrorKind::option || message.rfind(library_name, 0) != 0) throw;
+        throw tessera::Error(e.kind(), "n:" + message.substr(library_name.size()) + ", got " + std::to_string(n));
+    }
+}
+
+std::unique_ptr<PyGrower> make_grower(const tessera::Exemplar& exemplar, const py::dict& options) {
+    tessera::GrowOptions o;
+    for (const auto& [key, value] : options) apply_grow(o, py::str(key), value, exemplar.dimension);
+    try {
+        py::gil_scoped_release release;  // indexing a large exemplar takes a while
+        return std::make_unique<PyGrower>(tessera::Grower(exemplar, o));
+    } catch (const tessera::Error& e) {
+        rethrow_with_value(e, options);
+    }
+}
+
+tessera::Arrangement as_arrangement(const tessera::Exemplar& data) {
+    tessera::Arrangement a;
+    static_cast<tessera::Exemplar&>(a) = data;
+    return a;
+}
+
+py::array_t<bool> locked_of(const tessera::Arrangement& a) {
+    py::array_t<bool> out(static_cast<py::ssize_t>(a.elements.size()));
+    auto m = out.mutable_unchecked<1>();
+    for (std::size_t i = 0; i < a.elements.size(); ++i) m(static_cast<py::ssize_t>(i)) = a.elements[i].locked;
+    return out;
+}
+
+py::array_t<long long> horizon_of(const tessera::Grower& grower) {
+    const std::vector<int>& h = grower.horizon();
+    return to_array(std::vector<long long>(h.begin(), h.end()));
+}
+
+py::dict default_grow_options() {
+    const tessera::GrowOptions d;
+    py::dict o;
+    o["radius"] = d.radius, o["choice"] = to_string(d.choice), o["patch_extent"] = d.patch_extent;
+    o["threshold"] = d.threshold, o["energy_factor"] = d.energy_factor, o["lock_distance"] = d.lock_distance;
+    o["band_weight"] = d.band_weight, o["solves"] = d.solves, o["votes"] = d.votes, o["k"] = d.k;
+    o["alpha"] = d.alpha, o["playouts"] = d.playouts, o["explore"] = d.explore, o["exploit"] = d.exploit;
+    o["max_rounds"] = d.max_rounds, o["field"] = py::none(), o["threads"] = d.threads, o["seed"] = d.seed;
+    return o;
+}
+
+}  // namespace
+
+void bind_grow(py::module_& m) {
+    py::class_<PyGrower>(m, "Grower",
+                         "On-demand growth: an arrangement grown outward along its horizon, next to elements "
+                         "that never move (use tessera.Grower, which wraps this class).")
+        .def(py::init(&make_grower), py::arg("exemplar"), py::arg("options"))
+        .def(
+            "seed",
+            [](PyGrower& g, const py::handle& center) {
+                const Changing changing(g);
+                g.grower.seed(to_vec3(center, "center"));
+            },
+            py::arg("center"),
+            "Start over from a copy of an exemplar patch centred at `center` (its elements are the first horizon).")
+        .def(
+            "set_arrangement",
+            [](PyGrower& g, const tessera::Exemplar& existing) {
+                const Changing changing(g);
+                g.grower.set_arrangement(as_arrangement(existing));
+            },
+            py::arg("arrangement"),
+            "Start over from `arrangement` (types matched by name): its elements are locked and the first horizon.")
+        .def(
+            "grow",
+            [](PyGrower& g, const tessera::Domain& region, const py::object& progress) {
+                return run(g, progress, [&](tessera::Grower& grower) { return grower.grow(region); });
+            },
+            py::arg("region"), py::arg("progress") = py::none())
+        .def(
+            "grow",
+            [](PyGrower& g, long long n, const py::object& progress) {
+                return run(g, progress, [&](tessera::Grower& grower) { return grow_count(grower, n); });
+            },
+            py::arg("n"), py::arg("progress") = py::none())
+        .def(
+            "step",
+            [](PyGrower& g) { return run(g, py::none(), [](tessera::Grower& grower) { return grower.step(); }); },
+            "One round, unbounded (no region); returns its report.")
+        .def_property_readonly(
+            "arrangement", [](const PyGrower& g) { return reading(g).arrangement(); },
+            "The arrangement so far (a copy), framed by the grown regions and elements.")
+        .def_property_readonly(
+            "locked", [](const PyGrower& g) { return locked_of(reading(g).arrangement()); },
+            "Lock flag of each element, E: the elements the grower started from never move.")
+        .def_property_readonly(
+            "horizon", [](const PyGrower& g) { return horizon_of(reading(g)); },
+            "Indices of the current horizon's elements (into the arrangement's elements).")
+        .def_property_readonly(
+            "radius", [](const PyGrower& g) { return reading(g).radius(); },
+            "The neighbourhood radius in use (the automatic one when radius=0 was given).")
+        .def("__len__", [](const PyGrower& g) { return reading(g).arrangement().elements.size(); });
+    // Domain.parse names its argument `domain`; a grow call's is its region (--region in the CLI).
+    m.def(
+        "parse_region",
+        [](const std::string& spec, const tessera::Exemplar& exemplar) {
+            return tessera::parse_output_domain(spec, exemplar, 1.0, "region");
+        },
+        py::arg("spec"), py::arg("exemplar"), "A region from the --region text forms, relative to the exemplar.");
+    m.def("default_grow_options", &default_grow_options,
+          "The library's GrowOptions defaults (what the keyword defaults of tessera.Grower mirror).");
+}
+
+}  // namespace tessera_python
