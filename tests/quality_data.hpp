@@ -3,6 +3,9 @@
 // exemplar (what the pair correlation estimator's edge effects alone cost).
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +39,19 @@ inline Exemplar tiled(const Exemplar& ex) {
         for (int j = 0; j < 2; ++j)
             for (const Element& e : ex.elements) out.add_element(e.type, {e.position + Vec3{i * size.x, j * size.y, 0}}, e.radius);
     return out;
+}
+
+// Every class pair: crowded share within 1.5x of the exemplar's (and at most one element
+// more at small counts), no coincident pairs unless the exemplar has them: the bound the
+// quality tests put on every method's output.
+inline void expect_no_crowding(const Exemplar& ex, const Arrangement& out, const std::string& what) {
+    for (const CrowdingPair& c : crowding(ex, out)) {
+        EXPECT_LE(c.output_share, 1.5 * c.exemplar_share + 1.0 / std::max<long>(1, c.output_elements))
+            << what << " " << c.name_a << ">" << c.name_b;
+        if (c.exemplar_coincident == 0) {
+            EXPECT_EQ(c.output_coincident, 0) << what << " " << c.name_a << ">" << c.name_b;
+        }
+    }
 }
 
 }  // namespace tessera::test

@@ -14,24 +14,9 @@
 
 using namespace tessera;
 using test::example;
+using test::expect_no_crowding;
 using test::field_pattern;
 using test::tiled;
-
-namespace {
-
-// Every class pair: crowded share within 1.5x of the exemplar's (and at most one element
-// more at small counts), no coincident pairs unless the exemplar has them.
-void expect_no_crowding(const Exemplar& ex, const Arrangement& out, const std::string& what) {
-    for (const CrowdingPair& c : crowding(ex, out)) {
-        EXPECT_LE(c.output_share, 1.5 * c.exemplar_share + 1.0 / std::max<long>(1, c.output_elements))
-            << what << " " << c.name_a << ">" << c.name_b;
-        if (c.exemplar_coincident == 0) {
-            EXPECT_EQ(c.output_coincident, 0) << what << " " << c.name_a << ">" << c.name_b;
-        }
-    }
-}
-
-}  // namespace
 
 TEST(DetQuality, FieldDataAtFourTimesTheAreaKeepTheirStatistics) {
     for (const std::string& name : test::field_dataset_names()) {

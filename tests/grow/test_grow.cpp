@@ -17,6 +17,7 @@
 
 using namespace tessera;
 using test::example;
+using test::expect_no_crowding;
 
 namespace {
 
@@ -39,18 +40,6 @@ Arrangement grown(const Exemplar& ex, const Domain& region, GrowOptions o = {}) 
     EXPECT_TRUE(r.covered) << "the region was not covered in " << r.rounds << " rounds";
     EXPECT_FALSE(r.bound_hit);
     return g.arrangement();
-}
-
-// Crowded shares within 1.5x of the exemplar's (one element more at small counts), no
-// coincident pairs: the bound the quality tests put on synthesis.
-void expect_no_crowding(const Exemplar& ex, const Arrangement& out, const std::string& what) {
-    for (const CrowdingPair& c : crowding(ex, out)) {
-        EXPECT_LE(c.output_share, 1.5 * c.exemplar_share + 1.0 / std::max<long>(1, c.output_elements))
-            << what << " " << c.name_a << ">" << c.name_b;
-        if (c.exemplar_coincident == 0) {
-            EXPECT_EQ(c.output_coincident, 0) << what << " " << c.name_a << ">" << c.name_b;
-        }
-    }
 }
 
 void expect_no_hole(const Exemplar& ex, const Arrangement& out, const std::string& what) {
