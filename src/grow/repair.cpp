@@ -5,11 +5,9 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <utility>
 #include <unordered_set>
 
 #include "core/crowding_repair.hpp"
-#include "core/parallel.hpp"
 
 namespace tessera::grow {
 
@@ -20,12 +18,8 @@ namespace {
 // region, and its cost grow faster than the output).
 constexpr double kTileReaches = 8.0;
 
-using Moves = std::vector<std::pair<int, Vec3>>;
-
-// Repairs one part: `movable`, and the elements within reach of it locked in the copy. Reads
-// the grower only; the new centroids go to `moves`.
-int repair_part(const Grower::Impl& g, const std::vector<int>& movable, const Domain* region, double reach,
-                Moves& moves) {
+// Repairs one part: `movable`, and the elements within reach of it locked in the copy.
+int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* region, double reach) {
     // The movable elements, then the fixed ones within reach of them (locked in the copy).
     std::vector<int> members = movable;
     std::unordered_set<int> in(movable.begin(), movable.end());
@@ -55,14 +49,14 @@ int repair_part(const Grower::Impl& g, const std::vector<int>& movable, const Do
     if (part.dimension == 2) blo.z = bhi.z = 0.0;
     const Domain around = Domain::box(blo, bhi, part.dimension);
     core::CrowdingRepairOptions options;
-    options.threads = 1;  // the parts run in parallel (repair_round)
+    options.threads = g.threads;  // the same result for any count
     const core::CrowdingRepairReport report = core::repair_crowding(part, region ? *region : around, g.bounds, options);
     for (size_t k = 0; k < movable.size(); ++k) {
         const Element& e = part.elements[k];
         if (e.locked) continue;
         Vec3 c;
         for (int s = 0; s < e.sample_count; ++s) c = c + part.samples[e.first_sample + s].p;
-        moves.emplace_back(movable[k], c * (1.0 / e.sample_count));
+        g.move(movable[k], c * (1.0 / e.sample_count));
     }
     return report.remaining;
 }
@@ -79,28 +73,8 @@ int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain*
         for (int k = 0; k < g.metric.dimension; ++k) key[k] = static_cast<long long>(std::floor(g.out[v].p[k] / tile));
         tiles[key].push_back(v);
     }
-    // 2^d colours of tiles: two tiles of one colour have a tile between them, wider than the
-    // reach, so their parts share no movable element and run in parallel; each colour's
-    // moves are applied in tile order before the next colour reads them.
-    const int colours = 1 << g.metric.dimension;
     int remaining = 0;
-    for (int colour = 0; colour < colours; ++colour) {
-        std::vector<const std::vector<int>*> parts;
-        for (const auto& [key, part] : tiles) {
-            int c = 0;
-            for (int k = 0; k < g.metric.dimension; ++k) c |= static_cast<int>(key[k] & 1) << k;
-            if (c == colour) parts.push_back(&part);
-        }
-        std::vector<Moves> moves(parts.size());
-        std::vector<int> left(parts.size(), 0);
-        core::parallel_for(static_cast<int>(parts.size()), g.threads, [&](int begin, int end, int) {
-            for (int k = begin; k < end; ++k) left[k] = repair_part(g, *parts[k], region, reach, moves[k]);
-        });
-        for (size_t k = 0; k < parts.size(); ++k) {
-            remaining += left[k];
-            for (const auto& [v, p] : moves[k]) g.move(v, p);
-        }
-    }
+    for (const auto& [key, part] : tiles) remaining += repair_part(g, part, region, reach);
     return remaining;
 }
 
