@@ -1,7 +1,8 @@
-"""Shared fixtures of the Python module's tests: paths of the repository and a small
-two-class exemplar built from numpy arrays."""
+"""Shared fixtures of the Python module's tests: paths of the repository, a small two-class
+exemplar built from numpy arrays, and running the Python examples of docs/python.md."""
 import os
 import pathlib
+import re
 
 import numpy as np
 import pytest
@@ -11,6 +12,21 @@ import tessera
 ROOT = pathlib.Path(os.environ.get("TESSERA_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 # Real point patterns (spatstat.data, GPL-2 or later; tests/data/spatstat/README.md).
 SHARED_DATA = ROOT / "tests" / "data" / "spatstat"
+
+
+def run_docs_example(heading, cwd):
+    """Runs the first ```python block after `heading` in docs/python.md from `cwd`, as a user
+    would paste it; returns the names it defined."""
+    text = (ROOT / "docs" / "python.md").read_text()
+    block = re.search(re.escape(heading) + r".*?```python\n(.*?)```", text, re.S).group(1)
+    before = os.getcwd()
+    os.chdir(cwd)
+    try:
+        scope = {}
+        exec(compile(block, "docs/python.md", "exec"), scope)
+    finally:
+        os.chdir(before)
+    return scope
 
 
 @pytest.fixture

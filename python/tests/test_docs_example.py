@@ -1,24 +1,16 @@
 """docs/python.md's ten-line example runs as written and does what it says."""
-import os
 import re
 
 import numpy as np
 
-from conftest import ROOT
+from conftest import ROOT, run_docs_example
 
 
 def test_the_ten_line_example_runs(tmp_path, capsys):
-    text = (ROOT / "docs" / "python.md").read_text()
-    block = re.search(r"## Ten lines.*?```python\n(.*?)```", text, re.S).group(1)
+    block = re.search(r"## Ten lines.*?```python\n(.*?)```", (ROOT / "docs" / "python.md").read_text(), re.S).group(1)
     code_lines = [line for line in block.splitlines() if line.strip() and not line.startswith("import")]
     assert len(code_lines) <= 10
-    cwd = os.getcwd()
-    os.chdir(tmp_path)
-    try:
-        scope = {}
-        exec(compile(block, "docs/python.md", "exec"), scope)
-    finally:
-        os.chdir(cwd)
+    scope = run_docs_example("## Ten lines", tmp_path)
     out = scope["out"]
     assert out.class_names == ["tree", "bush"]
     # 16x the area: about 16x the 60 elements, in both classes alike.

@@ -2,8 +2,6 @@
 locked elements that never move; keyword defaults are the library's, bad values name the
 keyword, the thread count changes nothing, progress can cancel."""
 import inspect
-import os
-import re
 import threading
 
 import numpy as np
@@ -11,7 +9,7 @@ import pytest
 
 import tessera
 from tessera import _tessera
-from conftest import ROOT
+from conftest import ROOT, run_docs_example
 
 
 @pytest.fixture
@@ -225,15 +223,8 @@ def test_another_thread_is_refused_while_it_grows(two_class_file):
 
 
 def test_the_docs_example_runs(capsys):
-    text = (ROOT / "docs" / "python.md").read_text()
-    block = re.search(r"## Growth: tessera.Grower.*?```python\n(.*?)```", text, re.S).group(1)
-    cwd = os.getcwd()
-    os.chdir(ROOT)  # the example names its exemplar relative to the repository
-    try:
-        scope = {}
-        exec(compile(block, "docs/python.md", "exec"), scope)
-    finally:
-        os.chdir(cwd)
+    # The example names its exemplar relative to the repository.
+    scope = run_docs_example("## Growth: tessera.Grower", ROOT)
     out = scope["out"]
     assert isinstance(out, tessera.Arrangement) and len(out) > 4 * 112
     assert "grown in" in capsys.readouterr().out
