@@ -74,8 +74,9 @@ Match best_match(const Grower::Impl& g, int type, int own, int shape_of, int m, 
     Match best;
     best.neighbors = m;
     double best_cost = 1e300;
-    if (from >= 0) {  // tried first, so that it wins ties
-        s.candidates.insert(s.candidates.begin(), from);
+    if (from >= 0) {  // tried first, so that it wins ties (it is in the list once)
+        const auto it = std::find(s.candidates.begin(), s.candidates.end(), from);
+        if (it != s.candidates.end()) std::rotate(s.candidates.begin(), it, it + 1);
     }
     for (const int c : s.candidates) {
         // The element's own shape against the candidate's, then its neighbourhood (Eq. 3).
