@@ -11,39 +11,25 @@
 
 #include "common.hpp"
 #include "interrupt_scope.hpp"
+#include "option_flags.hpp"
 #include "status_printer.hpp"
 
 namespace tessera_cli {
 namespace {
 
 struct GrowArgs {
-    std::string input, output, region, from, preview, rounds_dir, input_domain, choice = "patch";
+    std::string input, output, region, from, preview, rounds_dir, input_domain;
     std::string gltf_instancing = "gpu";
     int elements = 0;
     bool quiet = false;
     tessera::GrowOptions options;
+    OptionFlags flags;  // GrowOptions as flags, from the table (tessera/option_table.hpp)
     CLI::Option* region_option = nullptr;
     CLI::Option* elements_option = nullptr;
 };
 
-tessera::GrowChoice parse_choice(const std::string& text) {
-    if (text == "patch") return tessera::GrowChoice::patch;
-    if (text == "mcts") return tessera::GrowChoice::mcts;
-    fail_option("--choice must be patch or mcts, got '" + text + "'");
-}
-
-// The library's option errors name GrowOptions fields; the CLI names its flags.
-const FlagNames grow_flags = {{"radius", "--radius"},
-                              {"patch_extent", "--patch-extent"},
-                              {"threshold", "--threshold"},
-                              {"energy_factor", "--energy-factor"},
-                              {"lock_distance", "--lock-distance"},
-                              {"solves", "--solves"},
-                              {"playouts", "--playouts"},
-                              {"max_rounds", "--max-rounds"},
-                              {"threads", "--threads"},
-                              {"elements", "--elements"},
-                              {"region", "--region"}};
+// The library's errors about a grow call's target name its parameters; the CLI names its flags.
+const FlagNames grow_flags = {{"elements", "--elements"}, {"region", "--region"}};
 
 // A picture of the arrangement after each round, all framed by `frame`, and a contact
 // sheet of them side by side.
@@ -100,7 +86,7 @@ void run_grow(GrowArgs& args) {
     if (by_region == by_count) fail_option("give one of --region SHAPE or --elements N");
     if (by_count && args.elements <= 0) fail_option("--elements must be > 0, got " + std::to_string(args.elements));
     if (by_region) tessera::check_domain_spec(args.region, "--region");
-    args.options.choice = parse_choice(args.choice);
+    args.flags.apply(tessera::grow_option_table(), args.options);
     check_arrangement_output(args.output, "-o");
     if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
     tessera::SaveOptions save_options;
@@ -113,6 +99,7 @@ void run_grow(GrowArgs& args) {
         static_cast<tessera::Exemplar&>(a) = status.step("reading " + args.from, [&] { return load_input(args.from, ""); });
         existing = std::move(a);
     }
+    args.flags.apply(tessera::grow_option_table(), args.options, exemplar.dimension);  // --field
     std::optional<tessera::Domain> region;
     if (by_region) region = tessera::parse_output_domain(args.region, exemplar, 1.0, "--region");
     if (!args.rounds_dir.empty() && (exemplar.dimension != 2 || !region))
@@ -190,30 +177,7 @@ Subcommand add_grow_command(CLI::App& app) {
                     "2D with --region: write a picture after each round (round_NNN.png) and a contact sheet "
                     "(contact_sheet.png) into this directory.")
         ->type_name("DIR");
-    cmd->add_option("--choice", args->choice,
-                    "How a round chooses its candidates: patch (copy the best-fitting input patch, then filter) "
-                    "or mcts (the paper's single-player Monte-Carlo tree search).")
-        ->capture_default_str();
-    cmd->add_option("--radius", args->options.radius, "Neighbourhood radius; 0 = automatic (as 'tessera synth').")
-        ->capture_default_str();
-    cmd->add_option("--patch-extent", args->options.patch_extent,
-                    "patch: extent of the input patch copied at each horizon element, in radii (>= 1).")
-        ->capture_default_str();
-    cmd->add_option("--threshold", args->options.threshold,
-                    "Threshold c of the partial pair assignment, as a share of the mean spacing (0 to 1].")
-        ->capture_default_str();
-    cmd->add_option("--energy-factor", args->options.energy_factor,
-                    "t: candidates whose neighbourhood energy exceeds t x the round's mean are dropped (> 1).")
-        ->capture_default_str();
-    cmd->add_option("--lock-distance", args->options.lock_distance,
-                    "Elements further than this from the horizon (in radii) are fixed in the position solve.")
-        ->capture_default_str();
-    add_integer_option(*cmd, "--solves", args->options.solves, "Least-squares position solves per round (0 to 100).");
-    add_integer_option(*cmd, "--playouts", args->options.playouts, "mcts: play-outs per round.");
-    add_integer_option(*cmd, "--max-rounds", args->options.max_rounds,
-                       "Bound on the rounds of one call (reported when it stops the growth).");
-    add_seed_option(*cmd, args->options.seed);
-    add_threads_option(*cmd, args->options.threads);
+    args->flags.add(*cmd, {method_options("grow", tessera::grow_option_table())});
     add_gltf_instancing_option(*cmd, args->gltf_instancing);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);

@@ -13,6 +13,7 @@
 #include "tessera/io.hpp"
 #include "tessera/mesh.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/option_table.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/pcf_plot.hpp"
 #include "tessera/pcf_synthesis.hpp"

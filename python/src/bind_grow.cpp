@@ -1,6 +1,6 @@
 // tessera::Grower for Python (on-demand growth, include/tessera/grow.hpp). As for synthesize,
-// options arrive as a dict keyed by the Python keyword names (python/tessera/__init__.py
-// fills in the library's defaults), the GIL is released while a grow call or a round runs,
+// options arrive as a dict keyed by the Python keyword names (checked by the library's
+// option table, option_table.hpp), the GIL is released while a grow call or a round runs,
 // and the progress callable is called with the GIL held. Reports are dicts.
 //
 // A Grower is not thread-safe, and releasing the GIL lets another Python thread reach the
@@ -19,6 +19,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "option_table.hpp"
 #include "option_values.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/option_text.hpp"
@@ -28,53 +29,6 @@ namespace py = pybind11;
 namespace tessera_python {
 namespace {
 
-
-tessera::GrowChoice parse_choice(const std::string& choice) {
-    if (choice == "patch") return tessera::GrowChoice::patch;
-    if (choice == "mcts") return tessera::GrowChoice::mcts;
-    bad("choice must be patch or mcts, got '" + choice + "'");
-}
-
-const char* to_string(tessera::GrowChoice choice) { return choice == tessera::GrowChoice::mcts ? "mcts" : "patch"; }
-
-void apply_grow(tessera::GrowOptions& o, const std::string& key, const py::handle& v, int dimension) {
-    if (key == "seed") o.seed = get<std::uint64_t>(v, key, "an unsigned 64-bit integer");
-    else if (key == "threads") o.threads = integer(v, key);
-    else if (key == "radius") o.radius = number(v, key);
-    else if (key == "choice") o.choice = parse_choice(text(v, key));
-    else if (key == "patch_extent") o.patch_extent = number(v, key);
-    else if (key == "threshold") o.threshold = number(v, key);
-    else if (key == "energy_factor") o.energy_factor = number(v, key);
-    else if (key == "lock_distance") o.lock_distance = number(v, key);
-    else if (key == "band_weight") o.band_weight = number(v, key);
-    else if (key == "solves") o.solves = integer(v, key);
-    else if (key == "votes") o.votes = integer(v, key);
-    else if (key == "k") o.k = integer(v, key);
-    else if (key == "alpha") o.alpha = number(v, key);
-    else if (key == "playouts") o.playouts = integer(v, key);
-    else if (key == "explore") o.explore = number(v, key);
-    else if (key == "exploit") o.exploit = number(v, key);
-    else if (key == "max_rounds") o.max_rounds = integer(v, key);
-    else if (key == "field") {
-        if (!v.is_none()) o.field = tessera::OrientationField::parse(text(v, key), dimension, key);
-    } else {
-        bad("unknown option '" + key + "' for Grower");
-    }
-}
-
-// The library names a bad GrowOptions field at the start of its message ("energy_factor:
-// must be a number > 1"); the fields are spelled as the keywords, so the message already
-// names the keyword, and the value the caller gave is appended.
-[[noreturn]] void rethrow_with_value(const tessera::Error& e, const py::dict& options) {
-    const std::string message = e.what();
-    const std::size_t colon = message.find(':');
-    if (e.kind() == tessera::ErrorKind::option && colon != std::string::npos) {
-        const std::string key = message.substr(0, colon);
-        if (options.contains(key))
-            throw tessera::Error(e.kind(), message + ", got " + std::string(py::repr(options[key.c_str()])));
-    }
-    throw;
-}
 
 py::dict report_of(const tessera::GrowReport& r) {
     py::dict d;
@@ -163,13 +117,9 @@ tessera::GrowReport grow_count(tessera::Grower& grower, long long n) {
 
 std::unique_ptr<PyGrower> make_grower(const tessera::Exemplar& exemplar, const py::dict& options) {
     tessera::GrowOptions o;
-    for (const auto& [key, value] : options) apply_grow(o, py::str(key), value, exemplar.dimension);
-    try {
-        py::gil_scoped_release release;  // indexing a large exemplar takes a while
-        return std::make_unique<PyGrower>(tessera::Grower(exemplar, o));
-    } catch (const tessera::Error& e) {
-        rethrow_with_value(e, options);
-    }
+    apply_keywords(tessera::grow_option_table(), o, options, exemplar.dimension, "Grower");
+    py::gil_scoped_release release;  // indexing a large exemplar takes a while
+    return std::make_unique<PyGrower>(tessera::Grower(exemplar, o));
 }
 
 tessera::Arrangement as_arrangement(const tessera::Exemplar& data) {
@@ -188,17 +138,6 @@ py::array_t<bool> locked_of(const tessera::Arrangement& a) {
 py::array_t<long long> horizon_of(const tessera::Grower& grower) {
     const std::vector<int>& h = grower.horizon();
     return to_array(std::vector<long long>(h.begin(), h.end()));
-}
-
-py::dict default_grow_options() {
-    const tessera::GrowOptions d;
-    py::dict o;
-    o["radius"] = d.radius, o["choice"] = to_string(d.choice), o["patch_extent"] = d.patch_extent;
-    o["threshold"] = d.threshold, o["energy_factor"] = d.energy_factor, o["lock_distance"] = d.lock_distance;
-    o["band_weight"] = d.band_weight, o["solves"] = d.solves, o["votes"] = d.votes, o["k"] = d.k;
-    o["alpha"] = d.alpha, o["playouts"] = d.playouts, o["explore"] = d.explore, o["exploit"] = d.exploit;
-    o["max_rounds"] = d.max_rounds, o["field"] = py::none(), o["threads"] = d.threads, o["seed"] = d.seed;
-    return o;
 }
 
 }  // namespace
@@ -260,8 +199,6 @@ void bind_grow(py::module_& m) {
             return tessera::parse_output_domain(spec, exemplar, 1.0, "region");
         },
         py::arg("spec"), py::arg("exemplar"), "A region from the --region text forms, relative to the exemplar.");
-    m.def("default_grow_options", &default_grow_options,
-          "The library's GrowOptions defaults (what the keyword defaults of tessera.Grower mirror).");
 }
 
 }  // namespace tessera_python

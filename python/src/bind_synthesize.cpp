@@ -1,5 +1,5 @@
 // synthesize for Python: options arrive as a dict keyed by the Python keyword names
-// (python/tessera/__init__.py fills in the CLI's defaults), the GIL is released while the
+// (checked by the library's option tables, option_table.hpp), the GIL is released while the
 // library works, and the progress callable is called with the GIL held. A callable that
 // raises cancels the run and its exception reaches the caller; one that returns False
 // cancels it with tessera.Cancelled.
@@ -10,70 +10,17 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "option_table.hpp"
 #include "option_values.hpp"
 #include "tessera/det.hpp"
 #include "tessera/option_text.hpp"
+#include "tessera/grow.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace py = pybind11;
 
 namespace tessera_python {
 namespace {
-
-void apply_det(tessera::DetOptions& o, const std::string& key, const py::handle& v, int dimension) {
-    if (key == "seed") o.seed = get<std::uint64_t>(v, key, "an unsigned 64-bit integer");
-    else if (key == "threads") o.threads = integer(v, key);
-    else if (key == "iterations") o.iterations = integer(v, key);
-    else if (key == "radius") o.radius = number(v, key);
-    else if (key == "k") o.k = integer(v, key);
-    else if (key == "search") o.search = tessera::parse_search_mode(text(v, key), key);
-    else if (key == "matching") o.matching = tessera::parse_matching(text(v, key), key);
-    else if (key == "alpha") o.alpha = number(v, key);
-    else if (key == "lambda_") o.lambda = number(v, key);
-    else if (key == "patch_size") o.patch_size = number(v, key);
-    else if (key == "patch_candidates") o.patch_candidates = integer(v, key);
-    else if (key == "relax_sweeps") o.relax_sweeps = integer(v, key);
-    else if (key == "physics") o.physics = get<bool>(v, key, "True or False");
-    else if (key == "physics_substeps") o.physics_options.substeps = integer(v, key);
-    else if (key == "floor_distance") o.floor_distance = number(v, key);
-    else if (key == "boundary_distance") o.boundary_distance = number(v, key);
-    else if (key == "gravity") {
-        if (!v.is_none())
-            o.gravity = py::isinstance<py::str>(v) ? tessera::parse_axis_direction(text(v, key), key) : to_vec3(v, key);
-    } else if (key == "boundary") {
-        if (v.is_none()) return;
-        std::string sides;
-        if (py::isinstance<py::str>(v)) {
-            sides = text(v, key);
-        } else {
-            for (const auto side : v) sides += (sides.empty() ? "" : ",") + text(side, key);
-        }
-        o.boundary_sides = tessera::parse_boundary_sides(sides, key);
-    } else if (key == "field") {
-        if (!v.is_none()) o.field = tessera::OrientationField::parse(text(v, key), dimension, key);
-    } else {
-        bad("unknown option '" + key + "' for method 'det'");
-    }
-}
-
-void apply_pcf(tessera::PcfSynthOptions& o, const std::string& key, const py::handle& v) {
-    if (key == "seed") o.seed = get<std::uint64_t>(v, key, "an unsigned 64-bit integer");
-    else if (key == "threads") o.threads = integer(v, key);
-    else if (key == "iterations") o.max_iterations = integer(v, key);
-    else if (key == "relax_sweeps") o.relax_sweeps = integer(v, key);
-    else if (key == "max_fails") o.max_fails = integer(v, key);
-    else if (key == "grid_cells") o.grid_cells = integer(v, key);
-    else if (key == "epsilon0") o.epsilon0 = number(v, key);
-    else if (key == "epsilon_step") o.epsilon_step = number(v, key);
-    else if (key == "convergence") o.convergence = number(v, key);
-    else if (key == "stall") o.stall = number(v, key);
-    else if (key == "outlier_rounds") o.outlier_rounds = integer(v, key);
-    else if (key == "sigma") o.analysis.sigma = number(v, key);
-    else if (key == "step") o.analysis.step = number(v, key);
-    else if (key == "extent") o.analysis.extent = number(v, key);
-    else bad("unknown option '" + key + "' for method 'pcf'");
-}
-
 
 tessera::Arrangement run(const std::function<tessera::Arrangement(const tessera::Progress&)>& method,
                          const py::object& callback) {
@@ -104,14 +51,14 @@ tessera::Arrangement synthesize(const tessera::Exemplar& exemplar, const tessera
                                                              std::to_string(exemplar.dimension) + "D");
     if (method == "det") {
         tessera::DetOptions o;
-        for (const auto& [key, value] : options) apply_det(o, py::str(key), value, exemplar.dimension);
+        apply_keywords(tessera::det_option_table(), o, options, exemplar.dimension, "method 'det'");
         if (!o.boundary_sides.empty() && !(o.boundary_distance > 0.0)) bad("boundary needs boundary_distance > 0");
         return run([&](const tessera::Progress& p) { return tessera::synthesize_det(exemplar, domain, o, p); },
                    callback);
     }
     if (method == "pcf") {
         tessera::PcfSynthOptions o;
-        for (const auto& [key, value] : options) apply_pcf(o, py::str(key), value);
+        apply_keywords(tessera::pcf_option_table(), o, options, exemplar.dimension, "method 'pcf'");
         return run([&](const tessera::Progress& p) { return tessera::synthesize_pcf(exemplar, domain, o, p); },
                    callback);
     }
@@ -126,8 +73,8 @@ tessera::Arrangement synthesize_model(const tessera::PcfModel& model, const tess
         const std::string name = py::str(key);
         if (name == "sigma" || name == "step" || name == "extent")
             bad(name + " is fixed by the analysed model; analyze the exemplar again to change it");
-        apply_pcf(o, name, value);
     }
+    apply_keywords(tessera::pcf_option_table(), o, options, 2, "method 'pcf'");
     return run([&](const tessera::Progress& p) { return tessera::synthesize_pcf(model, domain, o, p); }, callback);
 }
 
@@ -138,28 +85,18 @@ void bind_synthesize(py::module_& m) {
           py::arg("progress"));
     m.def("synthesize_model", &synthesize_model, py::arg("model"), py::arg("domain"), py::arg("options"),
           py::arg("progress"));
-    m.def("default_options", [] {
-        const tessera::DetOptions d;
-        const tessera::PcfSynthOptions p;
-        py::dict det, pcf;
-        det["seed"] = d.seed, det["threads"] = d.threads, det["iterations"] = d.iterations;
-        det["radius"] = d.radius, det["k"] = d.k, det["search"] = tessera::to_string(d.search);
-        det["matching"] = tessera::to_string(d.matching), det["alpha"] = d.alpha, det["lambda_"] = d.lambda;
-        det["patch_size"] = d.patch_size, det["patch_candidates"] = d.patch_candidates;
-        det["relax_sweeps"] = d.relax_sweeps;
-        det["physics"] = d.physics, det["physics_substeps"] = d.physics_options.substeps;
-        det["floor_distance"] = d.floor_distance, det["boundary_distance"] = d.boundary_distance;
-        pcf["seed"] = p.seed, pcf["threads"] = p.threads, pcf["iterations"] = p.max_iterations;
-        pcf["relax_sweeps"] = p.relax_sweeps;
-        pcf["max_fails"] = p.max_fails, pcf["grid_cells"] = p.grid_cells, pcf["epsilon0"] = p.epsilon0;
-        pcf["epsilon_step"] = p.epsilon_step, pcf["convergence"] = p.convergence, pcf["stall"] = p.stall;
-        pcf["outlier_rounds"] = p.outlier_rounds, pcf["sigma"] = p.analysis.sigma, pcf["step"] = p.analysis.step;
-        pcf["extent"] = p.analysis.extent;
-        py::dict all;
-        all["det"] = det;
-        all["pcf"] = pcf;
-        return all;
-    }, "The library's option defaults per method (what the keyword defaults of tessera.synthesize mirror).");
+    m.def(
+        "option_tables",
+        [] {
+            py::dict tables;
+            tables["det"] = describe_table(tessera::det_option_table());
+            tables["pcf"] = describe_table(tessera::pcf_option_table());
+            tables["grow"] = describe_table(tessera::grow_option_table());
+            return tables;
+        },
+        "Every option of every method, from the library's tables (tessera/option_table.hpp): per method a "
+        "list of dicts (name, keyword, flag, kind, default, doc, choices, accepts). tessera.synthesize and "
+        "tessera.Grower take their keywords from them.");
 }
 
 }  // namespace tessera_python

@@ -26,7 +26,7 @@ import json as _json
 import numbers as _numbers
 import os as _os
 
-from . import _tessera
+from . import _options, _tessera
 from ._tessera import Arrangement, Domain, Exemplar, PcfModel
 from .errors import (Cancelled, DomainError, FileError, InputError, InternalError, OptionError,
                      TesseraError)
@@ -37,14 +37,6 @@ __all__ = [
     "InternalError", "OptionError", "PcfModel", "TesseraError", "analyze", "exemplar", "load",
     "metrics", "pair_correlation", "render", "save", "synthesize",
 ]
-
-_DEFAULTS = _tessera.default_options()
-_DET_ONLY = ("radius", "k", "search", "matching", "alpha", "lambda_", "patch_size", "patch_candidates",
-             "physics", "physics_substeps", "gravity", "floor_distance", "boundary", "boundary_distance",
-             "field")
-_PCF_ONLY = ("max_fails", "grid_cells", "epsilon0", "epsilon_step", "convergence", "stall", "outlier_rounds",
-             "sigma", "step", "extent")
-
 
 def exemplar(positions, classes=None, class_names=None, radii=None, orientations=None, scales=None,
              ids=None, locked=None, element_of_sample=None, sample_ids=None, times=None,
@@ -112,14 +104,7 @@ def render(data, path, width=800, meshes="auto", legend=True):
     _tessera.render(data, _os.fspath(path), width, meshes, bool(legend))
 
 
-def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterations=None,
-               threads=0, progress=None,
-               radius=0.0, k=4, search="kcoherence", matching="greedy", alpha=-1.0, lambda_=-1.0,
-               patch_size=0.0, patch_candidates=16, relax_sweeps=4, physics=False, physics_substeps=5,
-               gravity=None,
-               floor_distance=0.0, boundary=None, boundary_distance=0.0, field=None,
-               max_fails=1000, grid_cells=64, epsilon0=0.0, epsilon_step=0.001, convergence=0.003,
-               stall=0.005, outlier_rounds=2, sigma=0.25, step=0.1, extent=5.0):
+def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None, **options):
     """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement.
 
     exemplar  an Exemplar (from tessera.exemplar or tessera.load), a path to one, or, for
@@ -130,12 +115,6 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
               or None: the exemplar's domain scaled by `scale` (2 = about 4x the elements in 2D).
     method    "det": neighbourhood matching (Discrete Element Textures; 2D and 3D, any elements);
               "pcf": 2D disks from pair correlation functions (multi-class, dependent classes).
-    seed      seed of every random draw; the same inputs, options and seed give identical
-              output whatever `threads` is (0 = all hardware threads).
-    iterations det: search + assignment iterations (default 10); pcf: at most this many
-              refinement sweeps per class (default 100).
-    relax_sweeps  sweeps of the final pair-correlation relaxation (default 4, 0 = off; det:
-              exemplars of single-sample elements; pcf: synthesis from an exemplar).
     progress  optional callable, called with a dict (stage, iteration, iterations, energy,
               elapsed, fraction) for every event of the run: its stages (det: "init",
               "patches", "fill", "iteration", "relax", "repair", "settle" with physics;
@@ -145,40 +124,25 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
               CLI prints. Return False to cancel (tessera.Cancelled is
               raised); an exception it raises cancels the run and propagates.
 
-    det options (docs/cli.md and `tessera synth --help` give the details):
-      radius (0 = automatic), k, search ("kcoherence" | "exhaustive"), matching ("greedy" |
-      "hungarian"), alpha and lambda_ (negative = automatic), patch_size (0 = automatic),
-      patch_candidates, physics,
-      physics_substeps, gravity ("-z", or a vector), floor_distance,
-      boundary ("-x,+x" or ["-x", "+x"]) with boundary_distance, field (the --field forms,
-      e.g. "vortex:5,5" or "grid:FILE.json").
-    pcf options: max_fails, grid_cells, epsilon0, epsilon_step, convergence, stall, outlier_rounds,
-      sigma, step, extent.
+    The options of both methods (listed below, from the library's option table; the same
+    names, defaults and checks as `tessera synth`'s flags, dashes written as underscores):
+    seed (the same inputs, options and seed give identical output whatever `threads` is),
+    iterations (default 10 for det, 100 for pcf), relax_sweeps and threads are shared; the
+    others belong to one method. None keeps an option's default.
     An option of the other method set to a value other than its default is an OptionError.
 
     Raises OptionError/DomainError/InputError (ValueErrors) naming what is wrong, FileError,
     Cancelled. The GIL is released while the library works.
     """
+    _options.check_keywords("synthesize", options, ("det", "pcf"))
     if method not in ("det", "pcf"):
         raise OptionError("method must be 'det' or 'pcf', got %r" % (method,))
-    given = dict(radius=radius, k=k, search=search, matching=matching, alpha=alpha, lambda_=lambda_,
-                 patch_size=patch_size, patch_candidates=patch_candidates, relax_sweeps=relax_sweeps,
-                 physics=physics,
-                 physics_substeps=physics_substeps, gravity=gravity, floor_distance=floor_distance,
-                 boundary=boundary, boundary_distance=boundary_distance, field=field,
-                 max_fails=max_fails, grid_cells=grid_cells, epsilon0=epsilon0,
-                 epsilon_step=epsilon_step, convergence=convergence, stall=stall,
-                 outlier_rounds=outlier_rounds,
-                 sigma=sigma, step=step, extent=extent)
-    mine, theirs = (_DET_ONLY, _PCF_ONLY) if method == "det" else (_PCF_ONLY, _DET_ONLY)
-    defaults = _DEFAULTS["pcf" if method == "det" else "det"]
-    for name in theirs:
-        if given[name] != defaults.get(name, None):
-            raise OptionError("%s applies to method=%r only" % (name, "pcf" if method == "det" else "det"))
-    options = {name: given[name] for name in mine}
-    options.update(seed=seed, threads=threads, relax_sweeps=relax_sweeps)
-    if iterations is not None:
-        options["iterations"] = iterations
+    other = "pcf" if method == "det" else "det"
+    mine, theirs = set(_options.keywords(method)), _options.defaults(other)
+    for name, value in options.items():
+        if name not in mine and value is not None and value != theirs[name]:
+            raise OptionError("%s applies to method=%r only" % (name, other))
+    options = {name: value for name, value in options.items() if name in mine}
     if progress is not None and not callable(progress):
         raise OptionError("progress must be callable, got %r" % (progress,))
     if isinstance(exemplar, (str, bytes, _os.PathLike)):
@@ -189,7 +153,8 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
         if domain is None:
             raise OptionError("domain is required when synthesizing from a PcfModel")
         for name in ("sigma", "step", "extent"):
-            options.pop(name)
+            if options.get(name) is not None:
+                raise OptionError("%s is fixed by the analysed model; analyze the exemplar again to change it" % name)
         return _tessera.synthesize_model(exemplar, _as_domain(domain, None, scale, "domain"), options,
                                          progress)
     if not isinstance(exemplar, Exemplar):
@@ -197,6 +162,9 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", seed=1, iterat
                           % type(exemplar).__name__)
     return _tessera.synthesize(exemplar, _as_domain(domain, exemplar, scale, "domain"), method, options,
                                progress)
+
+
+_options.with_signature(synthesize, ("exemplar", "domain", "scale", "method"), ("det", "pcf"), ("progress",))
 
 
 class Grower(_tessera.Grower):
@@ -210,19 +178,14 @@ class Grower(_tessera.Grower):
         out = g.arrangement
 
     exemplar  an Exemplar (from tessera.exemplar or tessera.load) or a path to one.
-    seed      seed of every random draw; the same exemplar, options and seed give the same
-              arrangement whatever `threads` is (0 = all hardware threads).
-    choice    how a round chooses among its candidates: "patch" (copy the input patch that
-              fits best at each horizon element, then filter) or "mcts" (the paper's
-              single-player Monte-Carlo tree search, with playouts, explore, exploit).
-    radius    neighbourhood radius (0 = automatic, as for synthesize); patch_extent: the
-              copied patch's extent in radii (>= 1); threshold: the pair assignment's
-              threshold as a share of the mean spacing (0 to 1]; energy_factor: candidates
-              above this many times the round's mean energy are dropped (> 1);
-              lock_distance (radii) and band_weight: the band of the position solve behind
-              the horizon; solves per round; votes before a type changes; k of k-coherence;
-              alpha (negative = automatic); max_rounds: bound on the rounds of one grow call;
-              field: an orientation field in the --field forms ("vortex:5,5", "grid:FILE.json").
+    options   the keywords listed in help(tessera.Grower.__init__), from the library's
+              option table, with the names, defaults and checks of `tessera grow`'s flags:
+              seed (the same exemplar, options and seed give the same arrangement whatever
+              `threads` is), choice ("patch": copy the input patch that fits best at each
+              horizon element, then filter; "mcts": the paper's single-player Monte-Carlo
+              tree search, with playouts, explore, exploit), radius, patch_extent, threshold,
+              energy_factor, lock_distance, band_weight, solves, votes, k, alpha, max_rounds,
+              field (an orientation field in the --field forms, "vortex:5,5").
 
     Methods: seed(center), set_arrangement(arrangement), grow(region) / grow(n), step();
     each grow call returns a report dict (rounds, added, candidates, merged, high_energy,
@@ -230,26 +193,22 @@ class Grower(_tessera.Grower):
     Properties: arrangement (an Arrangement), locked (E booleans), horizon (indices of the
     current horizon's elements), radius (the radius in use), len(grower).
 
-    Raises OptionError naming the keyword (``energy_factor: must be a number > 1, got
+    Raises OptionError naming the keyword (``energy_factor must be a number > 1, got
     0.5``), InputError for an invalid exemplar. The GIL is released while it grows; a
     Grower serves one thread at a time (RuntimeError when another thread is using it).
     """
 
-    def __init__(self, exemplar, *, radius=0.0, choice="patch", patch_extent=1.5, threshold=0.4,
-                 energy_factor=1.5, lock_distance=1.0, band_weight=4.0, solves=2, votes=2, k=6,
-                 alpha=-1.0, playouts=24, explore=0.5, exploit=1.0, max_rounds=10000, field=None,
-                 threads=0, seed=1):
+    def __init__(self, exemplar, **options):
+        _options.check_keywords("Grower", options, ("grow",))
         exemplar = _as_data(exemplar)
         if not isinstance(exemplar, Exemplar):
             raise OptionError("exemplar must be a tessera.Exemplar or a file path, got %s"
                               % type(exemplar).__name__)
-        options = dict(radius=radius, choice=choice, patch_extent=patch_extent, threshold=threshold,
-                       energy_factor=energy_factor, lock_distance=lock_distance, band_weight=band_weight,
-                       solves=solves, votes=votes, k=k, alpha=alpha, playouts=playouts, explore=explore,
-                       exploit=exploit, max_rounds=max_rounds, field=field, threads=threads, seed=seed)
         super().__init__(exemplar, options)
         # Text-form regions ("box:W,H") are relative to the exemplar, as for `tessera grow`.
         self._exemplar = exemplar
+
+    _options.with_signature(__init__, ("self", "exemplar"), ("grow",))
 
     def set_arrangement(self, arrangement):
         """Start over from `arrangement` (an Arrangement or Exemplar, or a path to one), whose

@@ -30,18 +30,6 @@ def python_defaults():
             if p.default is not inspect.Parameter.empty}
 
 
-def test_keyword_defaults_are_the_librarys():
-    defaults = python_defaults()
-    library = _tessera.default_options()
-    for method in ("det", "pcf"):
-        for name, value in library[method].items():
-            if name == "iterations":
-                continue  # None: 10 for det, 100 for pcf, as the CLI documents
-            assert defaults[name] == value, (method, name)
-    assert defaults["iterations"] is None
-    assert library["det"]["iterations"] == 10 and library["pcf"]["iterations"] == 100
-
-
 @pytest.mark.skipif("TESSERA_CLI" not in os.environ, reason="TESSERA_CLI is set by CTest")
 def test_keyword_names_and_defaults_match_the_cli_flags():
     text = subprocess.run([os.environ["TESSERA_CLI"], "synth", "--help"], capture_output=True, text=True,

@@ -8,8 +8,8 @@ import tessera
 
 @pytest.mark.parametrize("kwargs, needle", [
     (dict(radius=-1.0), "radius"),
-    (dict(k=0), "k must be >= 1"),
-    (dict(relax_sweeps=-1), "relax_sweeps must be from 0 to 1000"),
+    (dict(k=0), "k must be an integer >= 1, got 0"),
+    (dict(relax_sweeps=-1), "relax_sweeps must be an integer from 0 to 1000, got -1"),
     (dict(search="fast"), "search must be kcoherence or exhaustive"),
     (dict(matching="best"), "matching must be greedy or hungarian"),
     (dict(iterations=-2), "iterations"),
@@ -21,7 +21,7 @@ import tessera
     (dict(scale=-1), "scale must be a number > 0"),
     (dict(max_fails=10), "max_fails applies to method='pcf' only"),
     (dict(method="pcf", radius=1.0), "radius applies to method='det' only"),
-    (dict(method="pcf", grid_cells=0), "grid_cells must be from 1 to 4096"),
+    (dict(method="pcf", grid_cells=0), "grid_cells must be an integer from 1 to 4096, got 0"),
     (dict(gravity="down"), "gravity: expected an axis"),
     (dict(boundary="-x"), "boundary needs boundary_distance > 0"),
     (dict(field="spiral:1,2"), "field"),

@@ -8,6 +8,7 @@
 #include "det/density.hpp"
 #include "det/matching.hpp"
 #include "tessera/error.hpp"
+#include "tessera/option_table.hpp"
 
 namespace tessera::det {
 
@@ -35,15 +36,7 @@ std::vector<int> sample_keys(const Exemplar& data, std::vector<int>* type_key_ba
 
 Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
     auto bad = [](const std::string& what) { throw Error(ErrorKind::option, what); };
-    if (!std::isfinite(options.radius) || options.radius < 0.0) bad("--radius must be > 0 (or 0 for automatic)");
-    if (options.iterations < 0) bad("--iterations must be >= 0");
-    if (options.k < 1) bad("--k must be >= 1");
-    if (!std::isfinite(options.alpha)) bad("--alpha must be a finite number");
-    if (!std::isfinite(options.lambda)) bad("--lambda must be a finite number");
-    if (!std::isfinite(options.patch_size) || options.patch_size < 0.0) bad("--patch-size must be >= 0");
-    if (options.patch_candidates < 1) bad("--patch-candidates must be >= 1");
-    if (options.threads < 0) bad("--threads must be >= 0");
-    if (options.relax_sweeps < 0 || options.relax_sweeps > 1000) bad("--relax-sweeps must be from 0 to 1000");
+    check_options(det_option_table(), options);  // each field against its row, naming it
     Params p;
     p.dimension = exemplar.dimension;
     p.spacing = mean_nearest_neighbor_distance(exemplar);
@@ -67,11 +60,7 @@ Params resolve_params(const Exemplar& exemplar, const DetOptions& options) {
     Vec3 gravity = options.gravity;
     if (gravity == Vec3{}) gravity = exemplar.dimension == 2 ? Vec3{0, -1, 0} : Vec3{0, 0, -1};
     p.gravity = resolve_gravity(gravity, exemplar.dimension);
-    if (!std::isfinite(options.floor_distance) || options.floor_distance < 0.0)
-        bad("--floor-distance must be >= 0");
     p.floor_distance = options.floor_distance;
-    if (!std::isfinite(options.boundary_distance) || options.boundary_distance < 0.0)
-        bad("--boundary-distance must be >= 0");
     if (options.boundary_sides.size() > 6) bad("at most 6 boundary sides");
     for (const auto& side : options.boundary_sides)
         if (side.axis < 0 || side.axis >= exemplar.dimension || (side.sign != -1 && side.sign != 1))

@@ -8,6 +8,7 @@
 #include "core/parallel.hpp"
 #include "det/input_index.hpp"
 #include "tessera/error.hpp"
+#include "tessera/option_table.hpp"
 
 namespace tessera {
 
@@ -24,31 +25,8 @@ const Exemplar& validated(const Exemplar& exemplar) {
     return exemplar;
 }
 
-void check_options(const GrowOptions& o) {
-    auto bad = [](const std::string& what) { throw Error(ErrorKind::option, what); };
-    auto finite_at_least = [&](double v, double lo, const char* name) {
-        if (!std::isfinite(v) || v < lo) bad(std::string(name) + ": must be a number >= " + std::to_string(lo).substr(0, 4));
-    };
-    finite_at_least(o.radius, 0.0, "radius");
-    finite_at_least(o.patch_extent, 1.0, "patch_extent");
-    if (!std::isfinite(o.threshold) || o.threshold <= 0.0 || o.threshold > 1.0)
-        bad("threshold: must be > 0 and <= 1 (a share of the mean spacing)");
-    if (!std::isfinite(o.energy_factor) || o.energy_factor <= 1.0) bad("energy_factor: must be a number > 1");
-    if (!std::isfinite(o.lock_distance) || o.lock_distance <= 0.0) bad("lock_distance: must be a number > 0");
-    finite_at_least(o.band_weight, 0.0, "band_weight");
-    if (o.solves < 0 || o.solves > 100) bad("solves: must be from 0 to 100");
-    if (o.votes < 1) bad("votes: must be >= 1");
-    if (o.k < 1) bad("k: must be >= 1");
-    if (!std::isfinite(o.alpha)) bad("alpha: must be a finite number");
-    if (o.playouts < 1 || o.playouts > 100000) bad("playouts: must be from 1 to 100000");
-    finite_at_least(o.explore, 0.0, "explore");
-    finite_at_least(o.exploit, 0.0, "exploit");
-    if (o.max_rounds < 1) bad("max_rounds: must be >= 1");
-    if (o.threads < 0) bad("threads: must be >= 0");
-}
-
 grow::Metric resolve_metric(const Exemplar& exemplar, const GrowOptions& o) {
-    check_options(o);
+    check_options(grow_option_table(), o);  // each field against its row, naming it
     DetOptions det;
     det.radius = o.radius;
     det.alpha = o.alpha;

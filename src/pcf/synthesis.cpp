@@ -15,6 +15,7 @@
 #include "pcf/sparse_classes.hpp"
 #include "pcf/synth_steps.hpp"
 #include "tessera/error.hpp"
+#include "tessera/option_table.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace tessera {
@@ -40,23 +41,8 @@ constexpr double kOutlierSlack = 0.1;
 // Initialisation reports progress this often (seconds of work) at most.
 constexpr double kTickSeconds = 0.25;
 
-[[noreturn]] void bad_option(const std::string& message) { throw Error(ErrorKind::option, message); }
-
-void check_options(const PcfSynthOptions& o) {
-    const auto finite_at_least = [](double v, double lo) { return std::isfinite(v) && v >= lo; };
-    if (o.threads < 0) bad_option("threads must be >= 0 (0 = all hardware threads), got " + std::to_string(o.threads));
-    if (!finite_at_least(o.epsilon0, 0.0)) bad_option("epsilon0 must be a finite number >= 0");
-    if (!finite_at_least(o.epsilon_step, 0.0)) bad_option("epsilon_step must be a finite number >= 0");
-    if (o.max_fails < 0) bad_option("max_fails must be >= 0, got " + std::to_string(o.max_fails));
-    if (o.grid_cells < 1 || o.grid_cells > 4096)
-        bad_option("grid_cells must be from 1 to 4096, got " + std::to_string(o.grid_cells));
-    if (o.max_iterations < 0) bad_option("max_iterations must be >= 0, got " + std::to_string(o.max_iterations));
-    if (!finite_at_least(o.convergence, 0.0)) bad_option("convergence must be a finite number >= 0");
-    if (!finite_at_least(o.stall, 0.0)) bad_option("stall must be a finite number >= 0");
-    if (o.outlier_rounds < 0) bad_option("outlier_rounds must be >= 0, got " + std::to_string(o.outlier_rounds));
-    if (o.relax_sweeps < 0 || o.relax_sweeps > 1000)
-        bad_option("relax_sweeps must be from 0 to 1000, got " + std::to_string(o.relax_sweeps));
-}
+// Every option against its row of the table (tessera/option_table.hpp), naming the field.
+void check_options(const PcfSynthOptions& o) { tessera::check_options(pcf_option_table(), o); }
 
 [[noreturn]] void bad_model(const std::string& message) { throw Error(ErrorKind::input, "PCF model: " + message); }
 

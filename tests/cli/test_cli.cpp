@@ -346,8 +346,8 @@ TEST_F(CliHelp, EverySubcommandHasHelp) {
     }
     const Result synth = run("synth --help");
     for (const char* flag :
-         {"--scale FLOAT=2", "--seed", "--iterations INT=10", "--radius", "--threads", "--preview",
-          "--input-domain", "--domain", "--k INT=4", "--search TEXT=kcoherence", "--matching TEXT=greedy",
+         {"--scale FLOAT=2", "--seed", "--iterations INT", "--radius", "--threads", "--preview",
+          "--input-domain", "--domain", "--k INT=4", "--search kcoherence|exhaustive=kcoherence", "--matching greedy|hungarian=greedy",
           "--alpha", "--lambda", "--patch-size", "--relax-sweeps INT=4", "--quiet"})
         EXPECT_NE(synth.out.find(flag), std::string::npos) << flag;
 }

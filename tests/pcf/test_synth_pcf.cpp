@@ -296,7 +296,7 @@ TEST(PcfSynth, BadOptionsNameTheField) {
     expect_option(o, "grid_cells");
     o = {};
     o.max_iterations = -1;
-    expect_option(o, "max_iterations");
+    expect_option(o, "iterations");  // the option's name in every front end
     o = {};
     o.convergence = -0.1;
     expect_option(o, "convergence");
