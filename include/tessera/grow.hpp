@@ -90,6 +90,7 @@ struct GrowReport {
     int reassigned = 0;        // types changed by votes or redistribution
     int last_made = 0;         // elements the last round made (before displacements)
     int displaced = 0;         // recent elements a candidate of a type short of its share replaced
+    int filled = 0;            // elements put into enclosed holes behind the horizon
     bool covered = false;      // grow(region): the region took no more elements
     bool bound_hit = false;    // the round bound (GrowOptions::max_rounds) stopped the call
     double energy = 0.0;       // mean neighbourhood energy of the last round's horizon (Eq. 4 / |H|)

@@ -189,7 +189,7 @@ class Grower(_tessera.Grower):
 
     Methods: seed(center), set_arrangement(arrangement), grow(region) / grow(n), step();
     each grow call returns a report dict (rounds, added, candidates, merged, high_energy,
-    outside, reassigned, last_made, displaced, covered, bound_hit, energy, seconds).
+    outside, reassigned, last_made, displaced, filled, covered, bound_hit, energy, seconds).
     Properties: arrangement (an Arrangement), locked (E booleans), horizon (indices of the
     current horizon's elements), radius (the radius in use), len(grower).
 

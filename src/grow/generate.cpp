@@ -14,6 +14,10 @@ namespace {
 // Candidates whose centre lies at most this share of the spacing outside the region are
 // moved onto its boundary instead of being discarded.
 constexpr double kBoundaryPull = 0.5;
+// A candidate of a type short of its share is moved out of overlaps by at most this share of
+// its own hard core, in at most kNudgeSteps pushes (drop_overlapping).
+constexpr double kNudge = 0.25;
+constexpr int kNudgeSteps = 6;
 
 // The input entries of `e`'s patch paired with an output element within c (position only:
 // a pair of different types still occupies the place).
@@ -111,49 +115,6 @@ bool samples_clash(const std::vector<Vec3>& a, const std::vector<Vec3>& b, doubl
     return false;
 }
 
-// Element counts per type against the exemplar's shares.
-class TypeBalance {
-public:
-    explicit TypeBalance(const Grower::Impl& g) : g_(g), count_(g.exemplar.types.size(), 0), share_(count_.size(), 0.0) {
-        for (const OutElement& o : g.out) ++count_[o.type];
-        total_ = static_cast<int>(g.out.size());
-        for (const Element& e : g.exemplar.elements) share_[e.type] += 1.0 / g.exemplar.elements.size();
-    }
-    void add(int t) { ++count_[t], ++total_; }
-    void remove(int t) { --count_[t], --total_; }
-    // Type t is short of its share, and every blocking element is recent, unlocked,
-    // and of a type over its share (at most kMaxDisplaced of them).
-    bool may_displace(int t, const std::vector<int>& blocking) const {
-        if (static_cast<int>(blocking.size()) > kMaxDisplaced || !(share(t) < kMargin * share_[t])) return false;
-        for (const int i : blocking) {
-            const OutElement& o = g_.out[i];
-            if (i < g_.recent_first || o.locked || o.type == t || !(share(o.type) > share_[o.type])) return false;
-        }
-        return true;
-    }
-
-    // When type u is over its share: the type most short of its share (below the margin), else -1.
-    int short_type(int u) const {
-        if (!(share(u) > share_[u])) return -1;
-        int best = -1;
-        for (int t = 0; t < static_cast<int>(share_.size()); ++t)
-            if (t != u && share(t) < kMargin * share_[t] &&
-                (best < 0 || share(t) / share_[t] < share(best) / share_[best]))
-                best = t;
-        return best;
-    }
-
-private:
-    static constexpr int kMaxDisplaced = 4;
-    // Only a type clearly short of its share displaces others (no back and forth).
-    static constexpr double kMargin = 0.97;
-    double share(int t) const { return total_ > 0 ? static_cast<double>(count_[t]) / total_ : 0.0; }
-    const Grower::Impl& g_;
-    std::vector<int> count_;
-    std::vector<double> share_;
-    int total_ = 0;
-};
-
 // Removes the displaced elements (all at or after g.recent_first) and renumbers what
 // refers to the elements after them: the horizon and the rounds' first indices.
 void remove_displaced(Grower::Impl& g, const std::vector<char>& displaced) {
@@ -180,7 +141,30 @@ void remove_displaced(Grower::Impl& g, const std::vector<char>& displaced) {
 
 }  // namespace
 
-int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge) {
+TypeBalance::TypeBalance(const Grower::Impl& g) : g_(g), count_(g.exemplar.types.size(), 0), share_(count_.size(), 0.0) {
+    for (const OutElement& o : g.out) ++count_[o.type];
+    total_ = static_cast<int>(g.out.size());
+    for (const Element& e : g.exemplar.elements) share_[e.type] += 1.0 / static_cast<double>(g.exemplar.elements.size());
+}
+
+bool TypeBalance::may_displace(int t, const std::vector<int>& blocking) const {
+    if (static_cast<int>(blocking.size()) > kMaxDisplaced || !is_short(t)) return false;
+    for (const int i : blocking) {
+        const OutElement& o = g_.out[i];
+        if (i < g_.recent_first || o.locked || o.type == t || !over(o.type)) return false;
+    }
+    return true;
+}
+
+int TypeBalance::short_type(int u) const {
+    if (!over(u)) return -1;
+    int best = -1;
+    for (int t = 0; t < static_cast<int>(share_.size()); ++t)
+        if (t != u && is_short(t) && (best < 0 || share(t) / share_[t] < share(best) / share_[best])) best = t;
+    return best;
+}
+
+int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge, const Domain* region) {
     std::vector<int> order(candidates.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
     std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -227,14 +211,51 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
         }
         return false;
     };
-    for (const int a : order) {
-        Candidate c = candidates[a];
+    // The push that takes a candidate of type t at p out of the hard cores of the elements and
+    // taken candidates it overlaps: the sum of the overlaps, each along the line of centres.
+    auto push_out = [&](const Vec3& p, int t) {
+        Vec3 push;
+        auto add = [&](const Vec3& q, double core) {
+            Vec3 d = p - q;
+            if (g.metric.dimension == 2) d.z = 0.0;
+            const double l = norm(d);
+            if (l < core && l > 1e-12) push = push + d * ((core - l) / l);
+        };
+        g.grid.query(p, reach, [&](int i) { return g.out[i].p; }, near);
+        for (const int i : near)
+            if (!(i >= g.recent_first && displaced[i - g.recent_first])) add(g.out[i].p, g.hard_core(t, g.out[i].type));
+        taken_grid.query(p, reach, [&](int i) { return kept[i].p; }, near);
+        for (const int i : near) add(kept[i].p, merge * g.hard_core(t, kept[i].type));
+        return push;
+    };
+    // Moves a candidate of a type short of its share out of small overlaps: where patches
+    // copied at misaligned offsets meet, a large element finds no place exactly where it is
+    // proposed although one lies a fraction of its hard core away, and dropping it leaves
+    // the large type jammed at random sequential adsorption's density (far under a
+    // compacted exemplar's) while small elements fill the gaps. Returns false when no place
+    // within kNudge of its hard core is found.
+    auto nudge = [&](Candidate& c) {
+        const double limit = kNudge * g.hard_core(c.type, c.type);
+        Vec3 p = c.p;
+        for (int step = 0; step < kNudgeSteps; ++step) {
+            const Vec3 push = push_out(p, c.type);
+            if (dot(push, push) == 0.0) break;
+            p = p + push;
+            if (g.metric.dimension == 2) p.z = 0.0;
+            if (norm(p - c.p) > limit) return false;
+        }
+        if (region && !region->inside(p)) return false;
+        c.p = p;
+        return true;
+    };
+    // Takes candidate c (or not): returns true when taken.
+    auto take = [&](Candidate c) {
         if (by_samples) g.sample_positions(-1, c.source, c.frame, c.p, mine);
-        if (crowds(c.p, c.type, mine, blocking)) continue;
+        if (crowds(c.p, c.type, mine, blocking)) return false;
         if (!blocking.empty()) {
             // A type short of its share may take the place of recent elements of types over
             // theirs (the big element the small ones crowded out); otherwise it yields.
-            if (!balance.may_displace(c.type, blocking)) continue;
+            if (!balance.may_displace(c.type, blocking)) return false;
             for (const int i : blocking) displaced[i - g.recent_first] = 1, balance.remove(g.out[i].type);
             g.displaced += static_cast<int>(blocking.size());
         } else if (const int t = balance.short_type(c.type); t >= 0 && !by_samples) {
@@ -251,6 +272,27 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
         balance.add(c.type);
         if (by_samples) kept_samples.push_back(mine);
         else kept_samples.emplace_back();
+        return true;
+    };
+    // Candidates of one hard core are taken where they are first; those of a type short of
+    // its share that found no place are then nudged (after every exact place of their
+    // class is taken, so that a nudged one never takes a place proposed exactly).
+    std::vector<Candidate> deferred;
+    auto flush_deferred = [&] {
+        for (Candidate& c : deferred)
+            if (balance.is_short(c.type) && nudge(c)) take(c);
+        deferred.clear();
+    };
+    for (size_t begin = 0; begin < order.size();) {
+        const double core = g.hard_core(candidates[order[begin]].type, candidates[order[begin]].type);
+        size_t end = begin;
+        while (end < order.size() && g.hard_core(candidates[order[end]].type, candidates[order[end]].type) == core) ++end;
+        for (size_t k = begin; k < end; ++k) {
+            const Candidate& c = candidates[order[k]];
+            if (!take(c) && !by_samples && balance.is_short(c.type)) deferred.push_back(c);
+        }
+        flush_deferred();
+        begin = end;
     }
     const int dropped = static_cast<int>(candidates.size() - kept.size());
     candidates = std::move(kept);

@@ -7,6 +7,7 @@
 #include "core/rng.hpp"
 #include "grow/grow_state.hpp"
 #include "grow/round.hpp"
+#include "grow/vacancies.hpp"
 #include "tessera/error.hpp"
 
 namespace tessera {
@@ -213,9 +214,18 @@ GrowReport Grower::grow(const Domain& region) {
     const size_t start = g.out.size();
     grow::RoundLimits limits;
     limits.region = &region;
-    return run_rounds(
+    GrowReport report = run_rounds(
         g, limits, [](const GrowReport&) { return false; },
         [&](const GrowReport&) { return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected)); });
+    // Covered: the last two rounds are enclosed now (by later elements or the region's outside).
+    const size_t r = g.round_first.size();
+    if (report.covered && r > 0) {
+        const int filled = grow::fill_enclosed_holes(g, g.round_first[r >= 2 ? r - 2 : 0], static_cast<int>(g.out.size()), &region);
+        report.filled += filled;
+        report.added += filled;
+        if (filled > 0) g.dirty = true;
+    }
+    return report;
 }
 
 GrowReport Grower::grow(int n) {

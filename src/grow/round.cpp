@@ -6,6 +6,7 @@
 #include "grow/generate.hpp"
 #include "grow/mcts.hpp"
 #include "grow/optimize.hpp"
+#include "grow/vacancies.hpp"
 
 namespace tessera::grow {
 
@@ -42,9 +43,9 @@ int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     g.retry.clear();
     if (limits.region) report.outside += drop_outside(g, *limits.region, candidates);
     if (g.options.choice == GrowChoice::patch) {
-        report.merged += drop_overlapping(g, candidates, 1.0);
+        report.merged += drop_overlapping(g, candidates, 1.0, limits.region);
     } else {
-        report.merged += drop_overlapping(g, candidates, kTreeSearchMerge);
+        report.merged += drop_overlapping(g, candidates, kTreeSearchMerge, limits.region);
         const size_t before = candidates.size();
         choose_by_tree_search(g, candidates);
         report.merged += static_cast<int>(before - candidates.size());
@@ -68,7 +69,11 @@ int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     const OptimizeReport opt = optimize_round(g, limits.region);
     report.reassigned += opt.reassigned + opt.redistributed;
     report.energy = opt.unknowns > 0 ? opt.energy : mean;
-    report.added += added - g.displaced;
+    // The round two back is enclosed by now: its holes are filled.
+    const size_t r = g.round_first.size();
+    const int filled = r >= 3 ? fill_enclosed_holes(g, g.round_first[r - 3], g.round_first[r - 2], limits.region) : 0;
+    report.filled += filled;
+    report.added += added - g.displaced + filled;
     report.displaced += g.displaced;
     return added - g.displaced;
 }

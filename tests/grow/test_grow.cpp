@@ -137,6 +137,22 @@ TEST(Grow, PoissonDisksHaveNoHolesOrCrowdingAlsoAlongTheSeamOfTwoCalls) {
     expect_no_hole(ex, strip, "seam strip");
 }
 
+TEST(Grow, TwoClassGrownTo20TimesItsAreaKeepsSharesPcfAndHolesNearSynthesizeDets) {
+    const Exemplar ex = example("two_class_2d");
+    const Box b = ex.domain.bounds();
+    const double s = std::sqrt(20.0);
+    const Domain region = Domain::box(b.lo, b.lo + Vec3{s * b.size().x, s * b.size().y, 0}, 2);
+    Arrangement out = grown(ex, region);
+    Arrangement det = synthesize_det(ex, region);
+    out.domain = region;  // holes are measured inside the region grown
+    const std::vector<double> want = type_shares(ex.elements, 2), got = type_shares(out.elements, 2);
+    for (int t = 0; t < 2; ++t) EXPECT_NEAR(got[t], want[t], 0.05) << ex.types[t].name << " share";
+    const double e_grow = pcf_relative_error(ex, out), e_det = pcf_relative_error(ex, det);
+    EXPECT_LT(e_grow, 1.6 * e_det + 0.02) << "grow " << e_grow << ", synthesize_det " << e_det;
+    expect_no_hole(ex, out, "two class at 20x");
+    expect_no_crowding(ex, out, "two class at 20x");
+}
+
 TEST(Grow, TwoClassGrownInTwoCallsMatchesOneCallInSharesAndPcf) {
     const Exemplar ex = example("two_class_2d");
     const Box b = ex.domain.bounds();

@@ -1,0 +1,184 @@
+// Filling enclosed holes behind the horizon (grow/vacancies.hpp).
+#include "grow/vacancies.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "det/vacancies.hpp"
+#include "grow/generate.hpp"
+#include "grow/repair.hpp"
+
+namespace tessera::grow {
+
+namespace {
+
+// Directions probed around an element and tested for enclosure: 12 in 2D (30 degrees
+// apart), the 26 of the cube's neighbours in 3D.
+std::vector<Vec3> probe_directions(int dimension) {
+    std::vector<Vec3> dirs;
+    if (dimension == 2) {
+        for (int k = 0; k < 12; ++k) dirs.push_back({std::cos(k * M_PI / 6), std::sin(k * M_PI / 6), 0.0});
+        return dirs;
+    }
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z)
+                if (x || y || z) dirs.push_back(Vec3{double(x), double(y), double(z)} * (1.0 / std::sqrt(double(x * x + y * y + z * z))));
+    return dirs;
+}
+
+// A neighbour within this cosine of a direction covers it.
+constexpr double kCover = 0.5;
+// Pattern-search levels that centre a probed hole (steps from a quarter spacing, halved).
+constexpr int kCentreLevels = 4;
+// An element goes into a hole whose rim is at least this share of its hard cores away; the
+// crowding repair then pushes its neighbours out to the hard cores (a hole a little smaller
+// than an element is still a hole a viewer sees).
+constexpr double kSqueeze = 0.8;
+// A type already over its share fills only holes this many times deeper than the exemplar's
+// largest (a smaller one is left for later rounds' larger elements, not filled with more
+// of the small ones).
+constexpr double kOverShareDepth = 1.1;
+
+class HoleFiller {
+public:
+    HoleFiller(Grower::Impl& g, const Domain* region)
+        : g_(g), region_(region), dirs_(probe_directions(g.metric.dimension)), spacing_(g.metric.params.spacing) {
+        hole_ = det::exemplar_hole_radius(g.exemplar, spacing_, g.metric.params.radius);
+        for (const Element& e : g.exemplar.elements) max_rim_ = std::max(max_rim_, e.radius);
+    }
+
+    int run(int first, int end) {
+        int added = 0;
+        for (int i = first; i < end; ++i) {
+            const Vec3 at = g_.out[i].p;
+            g_.grid.query(at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, near_);
+            for (const Vec3& d : dirs_) {
+                if (covered(at, d, 1.5 * spacing_)) continue;
+                added += try_fill(at + d * (rim(i) + hole_ + 0.25 * spacing_));
+                g_.grid.query(at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, near_);
+            }
+        }
+        return added;
+    }
+
+    // The inserted elements and their unlocked neighbours, sorted (what the repair moves).
+    std::vector<int> movable() const {
+        std::vector<int> m = inserted_, near;
+        for (const int v : inserted_) {
+            g_.grid.query(g_.out[v].p, g_.reach, [&](int j) { return g_.out[j].p; }, near);
+            for (const int j : near)
+                if (!g_.out[j].locked) m.push_back(j);
+        }
+        std::sort(m.begin(), m.end());
+        m.erase(std::unique(m.begin(), m.end()), m.end());
+        return m;
+    }
+
+private:
+    double rim(int i) const { return g_.out[i].kept >= 0 ? g_.existing.elements[g_.out[i].kept].radius : g_.exemplar.elements[g_.out[i].source].radius; }
+
+    // A neighbour of `at` (in near_) within `reach` lies within kCover of direction d.
+    bool covered(const Vec3& at, const Vec3& d, double reach) const {
+        for (const int j : near_) {
+            const Vec3 v = g_.out[j].p - at;
+            const double l = norm(v);
+            if (l > 1e-12 && l <= reach && dot(v, d) >= kCover * l) return true;
+        }
+        return false;
+    }
+
+    // Rim-to-rim distance from c to the nearest element, at most cap.
+    double clearance(const Vec3& c, double cap) const {
+        g_.grid.query(c, cap + max_rim_, [&](int j) { return g_.out[j].p; }, probe_);
+        double best = cap;
+        for (const int j : probe_) best = std::min(best, norm(g_.out[j].p - c) - rim(j));
+        return best;
+    }
+
+    int try_fill(Vec3 c) {
+        if (g_.metric.dimension == 2) c.z = 0.0;
+        const double cap = 3.0 * spacing_;
+        double depth = clearance(c, cap);
+        for (int level = 0, step = 0; level < kCentreLevels; ++level) {
+            const double h = 0.25 * spacing_ / (1 << level);
+            for (bool moved = true; moved && step < 8 * kCentreLevels; ++step) {
+                moved = false;
+                for (int k = 0; k < 2 * g_.metric.dimension; ++k) {
+                    Vec3 q = c;
+                    q[k / 2] += (k % 2 ? -h : h);
+                    const double dq = clearance(q, cap);
+                    if (dq > depth) c = q, depth = dq, moved = true;
+                }
+            }
+        }
+        if (!(depth > hole_) || !(depth < cap) || (region_ && !region_->inside(c))) return 0;
+        g_.grid.query(c, depth + 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, probe_);
+        std::swap(near_, probe_);
+        bool enclosed = true;
+        for (const Vec3& d : dirs_)
+            if (!covered(c, d, depth + 1.5 * spacing_) && !(region_ && !region_->inside(c + d * (depth + spacing_))))
+                enclosed = false;
+        std::swap(near_, probe_);
+        if (!enclosed) return 0;
+        return insert(c, depth) ? 1 : 0;
+    }
+
+    // The type most short of its share whose hard cores hold at c, copied from the input
+    // element of that type nearest the nearest neighbour's match.
+    bool insert(const Vec3& c, double depth) {
+        g_.grid.query(c, std::max(g_.reach, depth + max_rim_ + 1e-9), [&](int j) { return g_.out[j].p; }, probe_);
+        if (probe_.empty()) return false;
+        int nearest = probe_[0];
+        for (const int j : probe_)
+            if (norm(g_.out[j].p - c) < norm(g_.out[nearest].p - c)) nearest = j;
+        TypeBalance balance(g_);
+        std::vector<int> types(g_.exemplar.types.size());
+        for (size_t t = 0; t < types.size(); ++t) types[t] = static_cast<int>(t);
+        std::stable_sort(types.begin(), types.end(), [&](int a, int b) { return balance.deficit(a) > balance.deficit(b); });
+        for (const int t : types) {
+            if (types.size() > 1 && balance.deficit(t) < -1e-9 && !(depth > kOverShareDepth * hole_)) continue;
+            bool fits = true;
+            for (const int j : probe_)
+                if (norm(g_.out[j].p - c) < kSqueeze * g_.hard_core(t, g_.out[j].type)) fits = false;
+            if (!fits) continue;
+            const OutElement& from = g_.out[nearest];
+            const Vec3 near_input = from.match >= 0 ? g_.input.centroid[from.match]
+                                                    : (from.source >= 0 ? g_.input.centroid[from.source] : Vec3{});
+            const int source = g_.input.nearest_in_pool(t, near_input, 1e300);
+            if (source < 0) continue;
+            OutElement e;
+            e.p = c;
+            e.type = t;
+            e.source = source;
+            e.frame = g_.frame_at(c);
+            e.match = source;
+            e.born = g_.round;
+            e.id = g_.next_id++;
+            inserted_.push_back(g_.add(e));
+            return true;
+        }
+        return false;
+    }
+
+    Grower::Impl& g_;
+    const Domain* region_;
+    std::vector<Vec3> dirs_;
+    double spacing_ = 1.0, hole_ = 0.0, max_rim_ = 0.0;
+    std::vector<int> near_, inserted_;
+    mutable std::vector<int> probe_;
+};
+
+}  // namespace
+
+int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region) {
+    for (const Element& e : g.exemplar.elements)
+        if (e.sample_count != 1) return 0;
+    if (first >= end) return 0;
+    HoleFiller filler(g, region);
+    const int added = filler.run(first, end);
+    if (added > 0) repair_round(g, filler.movable(), region);
+    return added;
+}
+
+}  // namespace tessera::grow

@@ -1,0 +1,19 @@
+// Holes behind the horizon (grow/vacancies.cpp): where two fronts meet, or where a large
+// element was dropped by the overlap filter, candidates can leave an empty place that no
+// later round reaches, since rounds only propose next to the horizon. Each round, once an
+// earlier round's elements are enclosed by later ones, the empty balls next to them larger
+// than the exemplar's own largest hole get an element (of the type most short of its share
+// whose hard cores hold), as det's vacancy filling does for synthesize_det.
+#pragma once
+
+#include "grow/grow_state.hpp"
+
+namespace tessera::grow {
+
+// Looks for enclosed holes next to elements [first, end) and fills them; the new elements
+// are appended (ids assigned, not on the horizon). A hole counts as enclosed when elements,
+// or the outside of `region` (when given), surround it in every direction. Only for
+// exemplars of single-sample elements (returns 0 otherwise). Returns how many were added.
+int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region);
+
+}  // namespace tessera::grow
