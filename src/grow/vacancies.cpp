@@ -43,7 +43,9 @@ constexpr double kOverShareDepth = 1.1;
 class HoleFiller {
 public:
     HoleFiller(Grower::Impl& g, const Domain* region)
-        : g_(g), region_(region), dirs_(probe_directions(g.metric.dimension)), spacing_(g.metric.params.spacing) {
+        : g_(g), region_(region), dirs_(probe_directions(g.metric.dimension)), spacing_(g.metric.params.spacing),
+          balance_(g), types_(g.exemplar.types.size()) {
+        for (size_t t = 0; t < types_.size(); ++t) types_[t] = static_cast<int>(t);
         hole_ = det::exemplar_hole_radius(g.exemplar, spacing_, g.metric.params.radius);
         for (const Element& e : g.exemplar.elements) max_rim_ = std::max(max_rim_, e.radius);
     }
@@ -55,7 +57,8 @@ public:
             g_.grid.query(at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, near_);
             for (const Vec3& d : dirs_) {
                 if (covered(at, d, 1.5 * spacing_)) continue;
-                added += try_fill(at + d * (rim(i) + hole_ + 0.25 * spacing_));
+                if (try_fill(at + d * (rim(i) + hole_ + 0.25 * spacing_)) == 0) continue;
+                ++added;
                 g_.grid.query(at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, near_);
             }
         }
@@ -132,12 +135,10 @@ private:
         int nearest = probe_[0];
         for (const int j : probe_)
             if (norm(g_.out[j].p - c) < norm(g_.out[nearest].p - c)) nearest = j;
-        TypeBalance balance(g_);
-        std::vector<int> types(g_.exemplar.types.size());
-        for (size_t t = 0; t < types.size(); ++t) types[t] = static_cast<int>(t);
-        std::stable_sort(types.begin(), types.end(), [&](int a, int b) { return balance.deficit(a) > balance.deficit(b); });
-        for (const int t : types) {
-            if (types.size() > 1 && balance.deficit(t) < -1e-9 && !(depth > kOverShareDepth * hole_)) continue;
+        for (size_t t = 0; t < types_.size(); ++t) types_[t] = static_cast<int>(t);  // ties in type order
+        std::stable_sort(types_.begin(), types_.end(), [&](int a, int b) { return balance_.deficit(a) > balance_.deficit(b); });
+        for (const int t : types_) {
+            if (types_.size() > 1 && balance_.deficit(t) < -1e-9 && !(depth > kOverShareDepth * hole_)) continue;
             bool fits = true;
             for (const int j : probe_)
                 if (norm(g_.out[j].p - c) < kSqueeze * g_.hard_core(t, g_.out[j].type)) fits = false;
@@ -156,6 +157,7 @@ private:
             e.born = g_.round;
             e.id = g_.next_id++;
             inserted_.push_back(g_.add(e));
+            balance_.add(t);
             return true;
         }
         return false;
@@ -165,6 +167,8 @@ private:
     const Domain* region_;
     std::vector<Vec3> dirs_;
     double spacing_ = 1.0, hole_ = 0.0, max_rim_ = 0.0;
+    TypeBalance balance_;  // counted once per call, kept up to date by insert()
+    std::vector<int> types_;
     std::vector<int> near_, inserted_;
     mutable std::vector<int> probe_;
 };
