@@ -16,6 +16,9 @@ namespace tessera::core {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Points whose neighbour search is worth a thread: a growth round repairs parts of a few
+// hundred elements many times, where starting threads would cost more than the search.
+constexpr int kPointsPerThread = 2048;
 // A pushed element lands this much beyond its bound, so rounding cannot leave it just short.
 constexpr double kOvershoot = 1.02;
 // The tail bounded per type pair holds at least this many of the exemplar's closest distances.
@@ -29,7 +32,6 @@ double lower_quantile(const std::vector<double>& sorted, double u) {
     const double position = std::ceil(std::clamp(u, 0.0, 1.0) * static_cast<double>(sorted.size())) - 1.0;
     return sorted[static_cast<size_t>(std::clamp(position, 0.0, static_cast<double>(sorted.size() - 1)))];
 }
-
 
 // The share of an ordered pair's distribution whose quantiles bound the output: `tail`,
 // and at least three of the exemplar's distances beyond its closest ones and their ties.
@@ -66,8 +68,8 @@ PointView points_of(const Exemplar& data, CrowdingLevel level) {
 // The violations of the current state: per ordered type pair, the points of a elements
 // ranked by their distance to the nearest point of another b element, each against the
 // exemplar quantile of its rank. Violations name points of `view`.
-std::vector<Violation> find_violations(const Exemplar& data, const PointView& view, const NearestDistanceTails& tails,
-                                       const CrowdingRepairOptions& o) {
+std::vector<Violation> find_violations(const Exemplar& data, const PointView& view,
+                                       const NearestDistanceTails& tails, const CrowdingRepairOptions& o) {
     const int types = tails.types();
     const int n = static_cast<int>(view.p.size());
     std::vector<Violation> found;
@@ -85,15 +87,19 @@ std::vector<Violation> find_violations(const Exemplar& data, const PointView& vi
     // leaving them out changes no rank (a rare big class no longer makes everyone look far).
     std::vector<double> type_reach(types);
     for (int a = 0; a < types; ++a) type_reach[a] = tails.reach(a, o.tail);
-    parallel_for(n, resolve_threads(o.threads), [&](int begin, int end, int) {
-        for (int i = begin; i < end; ++i)
-            grid.for_each_within(view.p[i], type_reach[type_of(i)], [&](int j, double d2) {
-                if (view.owner[j] == view.owner[i]) return;
-                const size_t slot = static_cast<size_t>(i) * types + type_of(j);
-                const double d = std::sqrt(d2);
-                if (d < distance[slot] || (d == distance[slot] && j < nearest[slot])) distance[slot] = d, nearest[slot] = j;
-            });
-    });
+    parallel_for(
+        n, resolve_threads(o.threads),
+        [&](int begin, int end, int) {
+            for (int i = begin; i < end; ++i)
+                grid.for_each_within(view.p[i], type_reach[type_of(i)], [&](int j, double d2) {
+                    if (view.owner[j] == view.owner[i]) return;
+                    const size_t slot = static_cast<size_t>(i) * types + type_of(j);
+                    const double d = std::sqrt(d2);
+                    if (d < distance[slot] || (d == distance[slot] && j < nearest[slot]))
+                        distance[slot] = d, nearest[slot] = j;
+                });
+        },
+        kPointsPerThread);
     std::vector<long> count(types, 0);
     for (int i = 0; i < n; ++i) ++count[type_of(i)];
     // (distance, the pair's lower point, the point): the two ends of a mutual pair are
@@ -173,7 +179,8 @@ bool move_element(Exemplar& data, int e, const Vec3& shift, const Domain& domain
     for (double f : {1.0, 0.5}) {
         const Vec3 s = shift * f;
         bool inside = true;
-        for (int k = 0; k < el.sample_count && inside; ++k) inside = domain.inside(data.samples[el.first_sample + k].p + s);
+        for (int k = 0; k < el.sample_count && inside; ++k)
+            inside = domain.inside(data.samples[el.first_sample + k].p + s);
         if (!inside) continue;
         for (int k = 0; k < el.sample_count; ++k) data.samples[el.first_sample + k].p += s;
         el.position += s;
@@ -223,7 +230,9 @@ CrowdingBounds::CrowdingBounds(const Exemplar& exemplar)
     if (has_samples) samples = NearestDistanceTails(exemplar, CrowdingLevel::samples);
 }
 
-double NearestDistanceTails::quantile(int a, int b, double u) const { return lower_quantile(distances(a, b), u); }
+double NearestDistanceTails::quantile(int a, int b, double u) const {
+    return lower_quantile(distances(a, b), u);
+}
 
 double NearestDistanceTails::reach(double tail) const {
     double r = 0.0;
@@ -235,7 +244,8 @@ double NearestDistanceTails::reach(double tail) const {
 double NearestDistanceTails::reach(int a, double tail) const {
     double r = 0.0;
     for (int b = 0; b < types_; ++b)
-        if (const auto& v = distances(a, b); !v.empty()) r = std::max(r, lower_quantile(v, bounded_tail(v, tail)));
+        if (const auto& v = distances(a, b); !v.empty())
+            r = std::max(r, lower_quantile(v, bounded_tail(v, tail)));
     return r;
 }
 
@@ -257,7 +267,8 @@ struct LevelViolations {
 std::vector<LevelViolations> all_violations(const Exemplar& data, const CrowdingBounds& bounds,
                                             const CrowdingRepairOptions& o) {
     std::vector<LevelViolations> all;
-    for (const NearestDistanceTails* tails : {&bounds.centroids, bounds.has_samples ? &bounds.samples : nullptr}) {
+    for (const NearestDistanceTails* tails :
+         {&bounds.centroids, bounds.has_samples ? &bounds.samples : nullptr}) {
         if (tails == nullptr) continue;
         LevelViolations level;
         level.view = points_of(data, tails->level());
@@ -291,7 +302,8 @@ CrowdingRepairReport repair_crowding(Exemplar& data, const Domain& domain, const
         std::vector<int> shifts(data.elements.size(), 0);
         for (const LevelViolations& level : all) add_moves(data, level.view, level.found, o, shift, shifts);
         for (size_t e = 0; e < data.elements.size(); ++e)
-            if (shifts[e] > 0 && move_element(data, static_cast<int>(e), shift[e] * (1.0 / shifts[e]), domain))
+            if (shifts[e] > 0 &&
+                move_element(data, static_cast<int>(e), shift[e] * (1.0 / shifts[e]), domain))
                 ++report.moved;
     }
     report.remaining = count_of(all_violations(data, bounds, o));
@@ -303,7 +315,8 @@ std::vector<CrowdedPair> crowded_pairs(const Exemplar& data, const CrowdingBound
                                        const CrowdingRepairOptions& options) {
     std::vector<CrowdedPair> pairs;
     for (const LevelViolations& level : all_violations(data, bounds, options))
-        for (const Violation& v : level.found) pairs.push_back({level.view.owner[v.sample], level.view.owner[v.neighbour]});
+        for (const Violation& v : level.found)
+            pairs.push_back({level.view.owner[v.sample], level.view.owner[v.neighbour]});
     std::sort(pairs.begin(), pairs.end(), [](const CrowdedPair& a, const CrowdedPair& b) {
         return a.element != b.element ? a.element < b.element : a.neighbour < b.neighbour;
     });

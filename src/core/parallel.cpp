@@ -21,9 +21,9 @@ int resolve_threads(int requested) {
     return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
-void parallel_for(int n, int threads, const std::function<void(int, int, int)>& body) {
+void parallel_for(int n, int threads, const std::function<void(int, int, int)>& body, int grain) {
     if (n <= 0) return;
-    threads = std::max(1, std::min(threads, n));
+    threads = std::max(1, std::min(threads, n / std::max(1, grain)));
     for (int seen = widest.load(); threads > seen && !widest.compare_exchange_weak(seen, threads);) {
     }
     if (threads == 1) {

@@ -15,7 +15,9 @@ int resolve_threads(int requested);
 // Calls body(begin, end, thread_index) on disjoint chunks covering [0, n).
 // thread_index < threads; each thread owns scratch indexed by it.
 // Exceptions thrown by a body are rethrown in the caller (the first by chunk order).
-void parallel_for(int n, int threads, const std::function<void(int begin, int end, int thread)>& body);
+// `grain`: the fewest indices worth a thread of their own (starting one costs tens of
+// microseconds): fewer threads run when n / grain is smaller than `threads`.
+void parallel_for(int n, int threads, const std::function<void(int begin, int end, int thread)>& body, int grain = 1);
 
 // The most threads any parallel_for ran with since the last reset: a diagnostic that lets
 // tests check that a method keeps to its `threads` option (the only state here, atomic).

@@ -24,8 +24,7 @@ constexpr int kNudgeSteps = 6;
 void mark_assigned(const Grower::Impl& g, int e, int patch, int m_out, Scratch& s, std::vector<char>& taken) {
     const InputElements& in = g.input;
     s.partner.assign(m_out, -1);
-    det::match_greedy(s.entries.data(), m_out, in.neighbors(e), patch, g.metric.params, s.match, s.partner.data(),
-                      1e300);
+    pair_greedy(s.entries.data(), m_out, in, e, patch, g.metric.params, s.pair, s.partner.data(), 1e300);
     taken.assign(patch, 0);
     for (int o = 0; o < m_out; ++o) {
         const int i = s.partner[o];
@@ -42,39 +41,43 @@ std::vector<Candidate> propose(Grower::Impl& g, double extent) {
     std::vector<std::vector<Candidate>> per(n);
     std::vector<int> matched(n, -1);
     const double gather = extent + std::sqrt(g.metric.threshold2);
-    core::parallel_for(n, g.threads, [&](int begin, int end, int) {
-        Scratch s;
-        std::vector<char> taken;
-        for (int k = begin; k < end; ++k) {
-            const int h = g.horizon[k];
-            const OutElement& he = g.out[h];
-            const Quat frame = g.frame_at(he.p);
-            gather_output(g, he.p, frame, h, gather, s);
-            const Match best = best_match(g, he.type, he.match >= 0 ? he.match : he.source, he.source,
-                                          count_within(s, g.metric.params.radius), s);
-            if (best.input < 0) continue;
-            matched[k] = best.input;
-            int patch = 0;
-            const det::NeighborEntry* nb = g.input.neighbors(best.input);
-            const double extent2 = extent * extent;
-            while (patch < g.input.patch_count[best.input] && dot(nb[patch].offset, nb[patch].offset) <= extent2)
-                ++patch;
-            mark_assigned(g, best.input, patch, static_cast<int>(s.entries.size()), s, taken);
-            for (int i = 0; i < patch; ++i) {
-                if (taken[i]) continue;
-                Candidate c;
-                c.p = he.p + frame.rotate(nb[i].offset);
-                if (g.metric.dimension == 2) c.p.z = 0.0;
-                c.type = nb[i].type;
-                c.source = nb[i].element;
-                c.frame = frame;
-                c.fit = best.mean();
-                c.proposer = h;
-                c.order = i;
-                per[k].push_back(c);
+    core::parallel_for(
+        n, g.threads,
+        [&](int begin, int end, int) {
+            Scratch s;
+            std::vector<char> taken;
+            for (int k = begin; k < end; ++k) {
+                const int h = g.horizon[k];
+                const OutElement& he = g.out[h];
+                const Quat frame = g.frame_at(he.p);
+                gather_output(g, he.p, frame, h, gather, s);
+                const Match best = best_match(g, he.type, he.match >= 0 ? he.match : he.source, he.source,
+                                              count_within(s, g.metric.params.radius), s);
+                if (best.input < 0) continue;
+                matched[k] = best.input;
+                int patch = 0;
+                const det::NeighborEntry* nb = g.input.neighbors(best.input);
+                const double extent2 = extent * extent;
+                while (patch < g.input.patch_count[best.input] &&
+                       dot(nb[patch].offset, nb[patch].offset) <= extent2)
+                    ++patch;
+                mark_assigned(g, best.input, patch, static_cast<int>(s.entries.size()), s, taken);
+                for (int i = 0; i < patch; ++i) {
+                    if (taken[i]) continue;
+                    Candidate c;
+                    c.p = he.p + frame.rotate(nb[i].offset);
+                    if (g.metric.dimension == 2) c.p.z = 0.0;
+                    c.type = nb[i].type;
+                    c.source = nb[i].element;
+                    c.frame = frame;
+                    c.fit = best.mean();
+                    c.proposer = h;
+                    c.order = i;
+                    per[k].push_back(c);
+                }
             }
-        }
-    });
+        },
+        kElementsPerThread);
     std::vector<Candidate> all;
     for (int k = 0; k < n; ++k) {
         if (matched[k] >= 0) g.out[g.horizon[k]].match = matched[k];
@@ -141,10 +144,12 @@ void remove_displaced(Grower::Impl& g, const std::vector<char>& displaced) {
 
 }  // namespace
 
-TypeBalance::TypeBalance(const Grower::Impl& g) : g_(g), count_(g.exemplar.types.size(), 0), share_(count_.size(), 0.0) {
+TypeBalance::TypeBalance(const Grower::Impl& g)
+    : g_(g), count_(g.exemplar.types.size(), 0), share_(count_.size(), 0.0) {
     for (const OutElement& o : g.out) ++count_[o.type];
     total_ = static_cast<int>(g.out.size());
-    for (const Element& e : g.exemplar.elements) share_[e.type] += 1.0 / static_cast<double>(g.exemplar.elements.size());
+    for (const Element& e : g.exemplar.elements)
+        share_[e.type] += 1.0 / static_cast<double>(g.exemplar.elements.size());
 }
 
 bool TypeBalance::may_displace(int t, const std::vector<int>& blocking) const {
@@ -160,11 +165,13 @@ int TypeBalance::short_type(int u) const {
     if (!over(u)) return -1;
     int best = -1;
     for (int t = 0; t < static_cast<int>(share_.size()); ++t)
-        if (t != u && is_short(t) && (best < 0 || share(t) / share_[t] < share(best) / share_[best])) best = t;
+        if (t != u && is_short(t) && (best < 0 || share(t) / share_[t] < share(best) / share_[best]))
+            best = t;
     return best;
 }
 
-int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge, const Domain* region) {
+int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge,
+                     const Domain* region) {
     std::vector<int> order(candidates.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
     std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -187,10 +194,20 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
     std::vector<char> displaced(g.out.size() - g.recent_first, 0);
     TypeBalance balance(g);
     // The elements and taken candidates a candidate of type t at p (samples `mine`) would
-    // crowd: existing ones into `blocking`; returns true when a taken candidate is crowded.
+    // crowd: existing ones into `blocking`; returns true when a taken candidate is crowded
+    // (then `blocking` is left empty: most candidates merge with a taken one, and the
+    // existing elements need not be looked at for them).
     auto crowds = [&](const Vec3& p, int t, const std::vector<Vec3>& mine, std::vector<int>& blocking) {
         blocking.clear();
-        g.grid.query(p, reach, [&](int i) { return g.out[i].p; }, near);
+        taken_grid.query(
+            p, reach, [&](int i) { return kept[i].p; }, near);
+        for (const int i : near) {
+            if (norm(kept[i].p - p) < merge * g.hard_core(t, kept[i].type)) return true;
+            if (by_samples && samples_clash(mine, kept_samples[i], merge * g.sample_core(t, kept[i].type)))
+                return true;
+        }
+        g.grid.query(
+            p, reach, [&](int i) { return g.out[i].p; }, near);
         for (const int i : near) {
             if (i >= g.recent_first && displaced[i - g.recent_first]) continue;
             const OutElement& o = g.out[i];
@@ -202,12 +219,6 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
                 hit = samples_clash(mine, theirs, g.sample_core(t, o.type));
             }
             if (hit) blocking.push_back(i);
-        }
-        taken_grid.query(p, reach, [&](int i) { return kept[i].p; }, near);
-        for (const int i : near) {
-            if (norm(kept[i].p - p) < merge * g.hard_core(t, kept[i].type)) return true;
-            if (by_samples && samples_clash(mine, kept_samples[i], merge * g.sample_core(t, kept[i].type)))
-                return true;
         }
         return false;
     };
@@ -221,10 +232,13 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
             const double l = norm(d);
             if (l < core && l > 1e-12) push = push + d * ((core - l) / l);
         };
-        g.grid.query(p, reach, [&](int i) { return g.out[i].p; }, near);
+        g.grid.query(
+            p, reach, [&](int i) { return g.out[i].p; }, near);
         for (const int i : near)
-            if (!(i >= g.recent_first && displaced[i - g.recent_first])) add(g.out[i].p, g.hard_core(t, g.out[i].type));
-        taken_grid.query(p, reach, [&](int i) { return kept[i].p; }, near);
+            if (!(i >= g.recent_first && displaced[i - g.recent_first]))
+                add(g.out[i].p, g.hard_core(t, g.out[i].type));
+        taken_grid.query(
+            p, reach, [&](int i) { return kept[i].p; }, near);
         for (const int i : near) add(kept[i].p, merge * g.hard_core(t, kept[i].type));
         return push;
     };
@@ -270,8 +284,10 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
         taken_grid.insert(static_cast<int>(kept.size()), c.p);
         kept.push_back(c);
         balance.add(c.type);
-        if (by_samples) kept_samples.push_back(mine);
-        else kept_samples.emplace_back();
+        if (by_samples)
+            kept_samples.push_back(mine);
+        else
+            kept_samples.emplace_back();
         return true;
     };
     // Candidates of one hard core are taken where they are first; those of a type short of
@@ -286,7 +302,9 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
     for (size_t begin = 0; begin < order.size();) {
         const double core = g.hard_core(candidates[order[begin]].type, candidates[order[begin]].type);
         size_t end = begin;
-        while (end < order.size() && g.hard_core(candidates[order[end]].type, candidates[order[end]].type) == core) ++end;
+        while (end < order.size() &&
+               g.hard_core(candidates[order[end]].type, candidates[order[end]].type) == core)
+            ++end;
         for (size_t k = begin; k < end; ++k) {
             const Candidate& c = candidates[order[k]];
             if (!take(c) && !by_samples && balance.is_short(c.type)) deferred.push_back(c);
@@ -316,20 +334,25 @@ int add_candidates(Grower::Impl& g, const std::vector<Candidate>& candidates) {
     return first;
 }
 
-int drop_high_energy(Grower::Impl& g, int first, double t, double& mean, std::vector<Candidate>& dropped_out) {
+int drop_high_energy(Grower::Impl& g, int first, double t, double& mean,
+                     std::vector<Candidate>& dropped_out) {
     const int n = static_cast<int>(g.out.size()) - first;
     std::vector<double> energy(n, 0.0);
     std::vector<int> matched(n, -1);
-    core::parallel_for(n, g.threads, [&](int begin, int end, int) {
-        Scratch s;
-        for (int k = begin; k < end; ++k) {
-            const OutElement& e = g.out[first + k];
-            gather_output(g, e.p, e.frame, first + k, g.metric.params.radius, s);
-            const Match m = best_match(g, e.type, e.source, e.source, static_cast<int>(s.entries.size()), s);
-            energy[k] = m.mean();
-            matched[k] = m.input;
-        }
-    });
+    core::parallel_for(
+        n, g.threads,
+        [&](int begin, int end, int) {
+            Scratch s;
+            for (int k = begin; k < end; ++k) {
+                const OutElement& e = g.out[first + k];
+                gather_output(g, e.p, e.frame, first + k, g.metric.params.radius, s);
+                const Match m =
+                    best_match(g, e.type, e.source, e.source, static_cast<int>(s.entries.size()), s);
+                energy[k] = m.mean();
+                matched[k] = m.input;
+            }
+        },
+        kElementsPerThread);
     double sum = 0.0;
     for (const double e : energy) sum += e;
     const double round_mean = n > 0 ? sum / n : 0.0;

@@ -7,6 +7,7 @@
 
 #include "core/parallel.hpp"
 #include "det/input_index.hpp"
+#include "det/vacancies.hpp"
 #include "tessera/error.hpp"
 #include "tessera/option_table.hpp"
 
@@ -51,12 +52,20 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
     input = grow::index_input_elements(exemplar, metric, options.k, threads);
     const int types = static_cast<int>(exemplar.types.size());
     for (int a = 0; a < types; ++a)
-        for (int b = 0; b < types; ++b) reach = std::max(reach, hard_core(a, b));
+        for (int b = 0; b < types; ++b) {
+            hard_cores.push_back(compute_hard_core(a, b));
+            sample_cores.push_back(bounds.has_samples ? bounds.samples.hard_core(a, b) : 0.0);
+            reach = std::max(reach, hard_cores.back());
+        }
     for (int i = 0; i < input.size(); ++i) {
         const Element& e = exemplar.elements[i];
         for (int k = 0; k < e.sample_count; ++k)
             extent = std::max(extent, norm(exemplar.samples[e.first_sample + k].p - input.centroid[i]));
     }
+    if (std::all_of(exemplar.elements.begin(), exemplar.elements.end(),
+                    [](const Element& e) { return e.sample_count == 1; }))
+        hole_radius = det::exemplar_hole_radius(exemplar, metric.params.spacing, metric.params.radius),
+        fills_holes = true;
     existing.dimension = exemplar.dimension;
     existing.types = exemplar.types;
 }
@@ -65,7 +74,7 @@ Quat Grower::Impl::frame_at(const Vec3& p) const {
     return options.field.active() ? options.field.frame(p, metric.dimension) : Quat{};
 }
 
-double Grower::Impl::hard_core(int a, int b) const {
+double Grower::Impl::compute_hard_core(int a, int b) const {
     double d = bounds.centroids.hard_core(a, b);
     if (bounds.has_samples) {
         // Multi-sample elements: the closest centroids of the exemplar come from particular
@@ -77,10 +86,6 @@ double Grower::Impl::hard_core(int a, int b) const {
         if (!t.distances(b, a).empty()) d = std::max(d, t.quantile(b, a, kMergeQuantile));
     }
     return std::max(d, kMergeFloor * metric.params.spacing);
-}
-
-double Grower::Impl::sample_core(int a, int b) const {
-    return bounds.has_samples ? bounds.samples.hard_core(a, b) : 0.0;
 }
 
 int Grower::Impl::add(const grow::OutElement& e) {

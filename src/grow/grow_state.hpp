@@ -9,6 +9,7 @@
 #include "core/crowding_repair.hpp"
 #include "core/dynamic_grid.hpp"
 #include "grow/input_elements.hpp"
+#include "grow/pairing.hpp"
 #include "tessera/grow.hpp"
 
 namespace tessera {
@@ -19,15 +20,15 @@ namespace grow {
 // `frame` (the field's frame where it was made); elements of an existing arrangement keep
 // their own samples (`kept`, an index into Grower::Impl::existing).
 struct OutElement {
-    Vec3 p;                  // centroid
+    Vec3 p;  // centroid
     int type = 0;
-    int source = -1;         // input element copied; -1 = an element of the existing arrangement
+    int source = -1;  // input element copied; -1 = an element of the existing arrangement
     int kept = -1;
     Quat frame;
-    int match = -1;          // input element its neighbourhood matched best last time
-    int born = 0;            // round that made it
+    int match = -1;  // input element its neighbourhood matched best last time
+    int born = 0;    // round that made it
     bool locked = false;
-    int tries = 0;           // as Candidate::tries, while it is being filtered
+    int tries = 0;  // as Candidate::tries, while it is being filtered
     std::uint64_t id = 0;
 };
 
@@ -35,19 +36,24 @@ struct OutElement {
 struct Candidate {
     Vec3 p;
     int type = 0;
-    int source = -1;     // input element e' whose attributes and layout it copies
+    int source = -1;  // input element e' whose attributes and layout it copies
     Quat frame;
-    double fit = 0.0;    // mean energy (Eq. 3 per neighbour) of its proposer's match
-    int proposer = -1;   // horizon element that proposed it
-    int order = 0;       // its rank among the proposer's candidates
-    int tries = 0;       // rounds it was proposed again after the energy filter dropped it
+    double fit = 0.0;   // mean energy (Eq. 3 per neighbour) of its proposer's match
+    int proposer = -1;  // horizon element that proposed it
+    int order = 0;      // its rank among the proposer's candidates
+    int tries = 0;      // rounds it was proposed again after the energy filter dropped it
 };
+
+// Elements whose neighbourhood match is worth a thread of its own (a match takes tens of
+// microseconds, as does starting a thread): core::parallel_for's grain in growth's loops.
+constexpr int kElementsPerThread = 16;
 
 // Buffers of one worker (no allocation in the inner loops once warm).
 struct Scratch {
-    std::vector<int> ids, candidates, partner;
+    std::vector<int> candidates, partner;
     std::vector<det::NeighborEntry> entries;
     det::MatchScratch match;
+    PairScratch pair;
 };
 
 }  // namespace grow
@@ -60,9 +66,14 @@ struct Grower::Impl {
     grow::Metric metric;
     int threads = 1;
     grow::InputElements input;
-    core::CrowdingBounds bounds;       // the exemplar's close-distance tails (centroids, samples)
-    double reach = 0.0;                // the largest hard core: the overlap filter's query radius
-    double extent = 0.0;               // the farthest sample from its element's centroid
+    core::CrowdingBounds bounds;  // the exemplar's close-distance tails (centroids, samples)
+    double reach = 0.0;           // the largest hard core: the overlap filter's query radius
+    double extent = 0.0;          // the farthest sample from its element's centroid
+    // Radius of the exemplar's largest empty disk or ball (det::exemplar_hole_radius): holes
+    // behind the horizon deeper than it are filled (grow/vacancies.hpp), for exemplars of
+    // single-sample elements only (`fills_holes`).
+    double hole_radius = 0.0;
+    bool fills_holes = false;
 
     std::vector<grow::OutElement> out;
     core::DynamicGrid grid;
@@ -70,21 +81,21 @@ struct Grower::Impl {
     // Candidates the energy filter dropped, proposed again next round: their neighbourhood
     // is fuller then, and a place left empty would stay a hole behind the horizon.
     std::vector<grow::Candidate> retry;
-    Arrangement existing;              // samples of the elements kept from set_arrangement
+    Arrangement existing;  // samples of the elements kept from set_arrangement
     int round = 0;
     // First element of each round that added some (elements are stored in round order), and
     // the first of the recent rounds whose elements a candidate short of its type's share may
     // displace (generate.cpp, TypeBalance): they are all at the tail of `out`.
     std::vector<int> round_first;
     int recent_first = 0;
-    int displaced = 0;                 // elements removed so, in the current round
+    int displaced = 0;  // elements removed so, in the current round
     std::uint64_t next_id = 0;
-    Box grown;                         // union of the regions grown (the arrangement's domain)
+    Box grown;  // union of the regions grown (the arrangement's domain)
     bool has_bounds = false;
 
     Progress progress;
     std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-    mutable Arrangement view;          // arrangement(), rebuilt when `dirty`
+    mutable Arrangement view;  // arrangement(), rebuilt when `dirty`
     mutable bool dirty = true;
 
     // Local frame of the field at p (identity without one).
@@ -92,10 +103,13 @@ struct Grower::Impl {
     // Hard-core distance between the centroids of types a and b, with a floor so that
     // coincident candidates always merge (for multi-sample elements a low quantile of the
     // exemplar's distances, grow_state.cpp).
-    double hard_core(int a, int b) const;
+    double hard_core(int a, int b) const { return hard_cores[a * exemplar.types.size() + b]; }
     // Hard-core distance between samples of different elements of types a and b (0 when the
     // exemplar has no multi-sample elements).
-    double sample_core(int a, int b) const;
+    double sample_core(int a, int b) const { return sample_cores[a * exemplar.types.size() + b]; }
+    // Both per type pair (row a, column b), computed once: they are asked in the inner loops.
+    std::vector<double> hard_cores, sample_cores;
+    double compute_hard_core(int a, int b) const;
     // Appends an element (grid included); returns its index.
     int add(const grow::OutElement& e);
     // Moves element i to p (grid included).
@@ -104,7 +118,8 @@ struct Grower::Impl {
     void drop_tail(int first, const std::vector<char>& keep);
     // Sample positions of an element centred at p: the samples of existing element `kept`
     // (when >= 0), else input element `source`'s layout turned by `frame`.
-    void sample_positions(int kept, int source, const Quat& frame, const Vec3& p, std::vector<Vec3>& out) const;
+    void sample_positions(int kept, int source, const Quat& frame, const Vec3& p,
+                          std::vector<Vec3>& out) const;
 };
 
 }  // namespace tessera

@@ -42,6 +42,20 @@ void gather_input_neighborhoods(InputElements& in, const Exemplar& ex, double re
         }
         in.nb_start[i + 1] = static_cast<int>(in.nb.size());
     }
+    InputElements::Columns& col = in.columns;
+    col.one_type = col.one_radius = n > 0;
+    if (n > 0) col.the_type = in.type[0], col.the_radius = ex.elements[0].radius;
+    for (int i = 0; i < n; ++i) {
+        col.one_type = col.one_type && in.type[i] == col.the_type;
+        col.one_radius = col.one_radius && ex.elements[i].radius == col.the_radius;
+    }
+    for (const det::NeighborEntry& e : in.nb) {
+        in.columns.x.push_back(e.offset.x);
+        in.columns.y.push_back(e.offset.y);
+        in.columns.z.push_back(e.offset.z);
+        in.columns.type.push_back(e.type);
+        in.columns.radius.push_back(e.radius);
+    }
 }
 
 // Per type, the elements whose patch lies inside the exemplar (a match there can copy a
@@ -76,7 +90,8 @@ void choose_pools(InputElements& in, const Exemplar& ex, const Metric& m) {
             in.pool[t].clear();
             for (int i = 0; i < in.size(); ++i)
                 if (in.type[i] == t && margin[i] >= need) in.pool[t].push_back(i);
-            if (static_cast<int>(in.pool[t].size()) >= std::max(1, std::min(kMinPool, of_type / 4)) || need < 0.0)
+            if (static_cast<int>(in.pool[t].size()) >= std::max(1, std::min(kMinPool, of_type / 4)) ||
+                need < 0.0)
                 break;
         }
     }
@@ -151,7 +166,8 @@ InputElements index_input_elements(const Exemplar& exemplar, const Metric& metri
     for (const Element& e : exemplar.elements) {
         in.centroid.push_back(element_centroid(exemplar, e));
         in.type.push_back(e.type);
-        for (int s = 0; s < e.sample_count; ++s) in.layout.push_back(exemplar.samples[e.first_sample + s].p - in.centroid.back());
+        for (int s = 0; s < e.sample_count; ++s)
+            in.layout.push_back(exemplar.samples[e.first_sample + s].p - in.centroid.back());
         in.layout_start.push_back(static_cast<int>(in.layout.size()));
     }
     const double reach = std::max(metric.patch_radius, metric.params.radius + std::sqrt(metric.params.cap2)) +

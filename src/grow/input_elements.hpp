@@ -16,26 +16,36 @@ namespace tessera::grow {
 
 // The metric's constants (Eq. 3 with the attribute term of DET's Eq. 1).
 struct Metric {
-    det::Params params;        // radius, spacing, cap2, alpha (det/model.hpp)
-    double patch_radius = 0.0; // extent of the patch generation copies
-    double threshold2 = 0.0;   // c: squared distance under which a pair is an assignment
+    det::Params params;         // radius, spacing, cap2, alpha (det/model.hpp)
+    double patch_radius = 0.0;  // extent of the patch generation copies
+    double threshold2 = 0.0;    // c: squared distance under which a pair is an assignment
     int dimension = 2;
 };
 
 struct InputElements {
     std::vector<Vec3> centroid;
     std::vector<int> type;
-    std::vector<det::NeighborEntry> nb;   // CSR: nb[nb_start[i] .. nb_start[i+1]), nearest first
+    std::vector<det::NeighborEntry> nb;  // CSR: nb[nb_start[i] .. nb_start[i+1]), nearest first
     std::vector<int> nb_start;
-    std::vector<int> metric_count;        // entries within r + cap (what Eq. 3 pairs against)
-    std::vector<int> patch_count;         // entries within the patch radius (what generation copies)
-    std::vector<int> within_r;            // entries within r (the local histogram of section V.C)
+    // The same neighbours as columns (index as in nb), for the pairing's inner loop
+    // (grow/pairing.hpp): offset, type as a number, element radius.
+    // When every input element has one type (one radius), an output entry of that type (that
+    // radius) has no attribute term against any of them: the pairing skips it.
+    struct Columns {
+        std::vector<double> x, y, z, type, radius;
+        bool one_type = false, one_radius = false;
+        int the_type = 0;
+        double the_radius = 0.0;
+    } columns;
+    std::vector<int> metric_count;  // entries within r + cap (what Eq. 3 pairs against)
+    std::vector<int> patch_count;   // entries within the patch radius (what generation copies)
+    std::vector<int> within_r;      // entries within r (the local histogram of section V.C)
     // Per type: the input elements a match may pick (those with whole patches when there
     // are enough of them), with a grid over their centroids.
     std::vector<std::vector<int>> pool;
     std::vector<std::vector<Vec3>> pool_position;
     std::vector<core::SpatialGrid> pool_grid;
-    std::vector<int> sim_start, sim;      // k-coherence similarity sets (CSR), within the pools
+    std::vector<int> sim_start, sim;  // k-coherence similarity sets (CSR), within the pools
     // Each element's samples relative to its centroid (CSR): its shape and heading.
     std::vector<Vec3> layout;
     std::vector<int> layout_start;

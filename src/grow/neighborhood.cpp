@@ -13,26 +13,30 @@ constexpr int kFallbackCandidates = 64;
 
 }  // namespace
 
-void gather_output(const Grower::Impl& g, const Vec3& p, const Quat& frame, int self, double radius, Scratch& s) {
-    g.grid.query(p, radius, [&](int i) { return g.out[i].p; }, s.ids);
+void gather_output(const Grower::Impl& g, const Vec3& p, const Quat& frame, int self, double radius,
+                   Scratch& s) {
     s.entries.clear();
     const Quat inverse = frame.conjugate();
-    for (const int i : s.ids) {
-        if (i == self) continue;
-        det::NeighborEntry e;
-        e.offset = inverse.rotate(g.out[i].p - p);
-        if (g.metric.dimension == 2) e.offset.z = 0.0;
-        e.sample = i;
-        e.element = i;
-        e.type = g.out[i].type;
-        const int src = g.out[i].source;
-        e.radius = src >= 0 ? g.exemplar.elements[src].radius : g.existing.elements[g.out[i].kept].radius;
-        s.entries.push_back(e);
-    }
-    std::sort(s.entries.begin(), s.entries.end(), [](const det::NeighborEntry& a, const det::NeighborEntry& b) {
-        const double da = dot(a.offset, a.offset), db = dot(b.offset, b.offset);
-        return da != db ? da < db : a.element < b.element;
-    });
+    // Unsorted: the entries are sorted below by distance, then index (a total order).
+    g.grid.for_each_within(
+        p, radius, [&](int i) { return g.out[i].p; },
+        [&](int i) {
+            if (i == self) return;
+            det::NeighborEntry e;
+            e.offset = inverse.rotate(g.out[i].p - p);
+            if (g.metric.dimension == 2) e.offset.z = 0.0;
+            e.sample = i;
+            e.element = i;
+            e.type = g.out[i].type;
+            const int src = g.out[i].source;
+            e.radius = src >= 0 ? g.exemplar.elements[src].radius : g.existing.elements[g.out[i].kept].radius;
+            s.entries.push_back(e);
+        });
+    std::sort(s.entries.begin(), s.entries.end(),
+              [](const det::NeighborEntry& a, const det::NeighborEntry& b) {
+                  const double da = dot(a.offset, a.offset), db = dot(b.offset, b.offset);
+                  return da != db ? da < db : a.element < b.element;
+              });
 }
 
 int count_within(const Scratch& s, double r) {
@@ -55,14 +59,16 @@ Match best_match(const Grower::Impl& g, int type, int own, int shape_of, int m, 
     // Where the element was copied from: coherent with its own layout even when its
     // neighbourhood is still one-sided (a frontier element, whose few neighbours fit
     // mirror places of the exemplar as well).
-    const int from = shape_of >= 0 ? in.nearest_in_pool(type, in.centroid[shape_of], g.metric.params.spacing) : -1;
+    const int from =
+        shape_of >= 0 ? in.nearest_in_pool(type, in.centroid[shape_of], g.metric.params.spacing) : -1;
     add_with_set(from);
     for (int j = 0; j < m; ++j) {
         const int known = g.out[s.entries[j].element].match;
         if (known < 0) continue;
         // The neighbour sits at offset o from us and matched input element `known`, so we
         // correspond to the input point centroid(known) - o (k-coherence).
-        add_with_set(in.nearest_in_pool(type, in.centroid[known] - s.entries[j].offset, g.metric.params.spacing));
+        add_with_set(
+            in.nearest_in_pool(type, in.centroid[known] - s.entries[j].offset, g.metric.params.spacing));
     }
     std::sort(s.candidates.begin(), s.candidates.end());
     s.candidates.erase(std::unique(s.candidates.begin(), s.candidates.end()), s.candidates.end());
@@ -82,8 +88,8 @@ Match best_match(const Grower::Impl& g, int type, int own, int shape_of, int m, 
         // The element's own shape against the candidate's, then its neighbourhood (Eq. 3).
         const double shape = in.shape_distance(shape_of, c);
         if (shape >= best_cost) continue;
-        const double cost = shape + det::match_greedy(s.entries.data(), m, in.neighbors(c), in.metric_count[c],
-                                                      g.metric.params, s.match, nullptr, best_cost - shape);
+        const double cost = shape + pair_greedy(s.entries.data(), m, in, c, in.metric_count[c],
+                                                g.metric.params, s.pair, nullptr, best_cost - shape);
         if (cost < best_cost) best_cost = cost, best.input = c;
     }
     best.energy = best.input >= 0 ? best_cost : 0.0;

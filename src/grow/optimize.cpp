@@ -21,17 +21,17 @@ constexpr double kHorizonAnchor = 0.01;
 
 // One prediction of Eq. 6 made by element v's neighbourhood: p(other) - p(v) = offset.
 struct Prediction {
-    int other = -1;     // output element
-    int input = -1;     // input element e' paired with it
-    Vec3 offset;        // o(v) (p(e') - p(e)), in world axes
+    int other = -1;  // output element
+    int input = -1;  // input element e' paired with it
+    Vec3 offset;     // o(v) (p(e') - p(e)), in world axes
     double weight = 1.0;
     bool assigned = false;  // within c: a vote in V.B
 };
 
 struct Unknowns {
-    std::vector<int> element;                // sorted element indices
-    std::vector<double> weight;              // Eq. 7's w: rises with the distance from the horizon
-    std::unordered_map<int, int> column;     // element -> column
+    std::vector<int> element;             // sorted element indices
+    std::vector<double> weight;           // Eq. 7's w: rises with the distance from the horizon
+    std::unordered_map<int, int> column;  // element -> column
 };
 
 // The horizon and the unlocked elements within the lock distance of it, with their weights.
@@ -41,7 +41,8 @@ Unknowns collect_unknowns(const Grower::Impl& g) {
     for (const int h : g.horizon) distance[h] = 0.0;
     std::vector<int> near;
     for (const int h : g.horizon) {
-        g.grid.query(g.out[h].p, lock, [&](int i) { return g.out[i].p; }, near);
+        g.grid.query(
+            g.out[h].p, lock, [&](int i) { return g.out[i].p; }, near);
         for (const int i : near) {
             if (g.out[i].locked) continue;
             const double d = norm(g.out[i].p - g.out[h].p);
@@ -67,40 +68,43 @@ void predict(Grower::Impl& g, const Unknowns& u, std::vector<std::vector<Predict
     predictions.assign(n, {});
     mean_energy.assign(n, 0.0);
     std::vector<int> matched(n, -1);
-    core::parallel_for(n, g.threads, [&](int begin, int end, int) {
-        Scratch s;
-        for (int c = begin; c < end; ++c) {
-            const int v = u.element[c];
-            const OutElement& e = g.out[v];
-            const Quat frame = g.frame_at(e.p);
-            gather_output(g, e.p, frame, v, g.metric.params.radius, s);
-            const int m = static_cast<int>(s.entries.size());
-            const Match best = best_match(g, e.type, e.match, e.source, m, s);
-            if (best.input < 0) continue;
-            matched[c] = best.input;
-            mean_energy[c] = best.mean();
-            s.partner.assign(m, -1);
-            const det::NeighborEntry* in = g.input.neighbors(best.input);
-            det::match_greedy(s.entries.data(), m, in, g.input.metric_count[best.input], g.metric.params, s.match,
-                              s.partner.data(), 1e300);
-            for (int o = 0; o < m; ++o) {
-                if (s.partner[o] < 0) continue;
-                const det::NeighborEntry& pi = in[s.partner[o]];
-                const Vec3 d = s.entries[o].offset - pi.offset;
-                const double cost = dot(d, d);
-                Prediction p;
-                p.other = s.entries[o].element;
-                p.input = pi.element;
-                p.offset = frame.rotate(pi.offset);
-                // Robust weight: a pair further off than the assignment threshold c is more
-                // likely a wrong pairing (an extra element paired with a free place a spacing
-                // away) than a displaced neighbour, and must not drag it onto another element.
-                p.weight = cost > g.metric.threshold2 ? std::pow(g.metric.threshold2 / cost, 2) : 1.0;
-                p.assigned = cost < g.metric.threshold2;
-                predictions[c].push_back(p);
+    core::parallel_for(
+        n, g.threads,
+        [&](int begin, int end, int) {
+            Scratch s;
+            for (int c = begin; c < end; ++c) {
+                const int v = u.element[c];
+                const OutElement& e = g.out[v];
+                const Quat frame = g.frame_at(e.p);
+                gather_output(g, e.p, frame, v, g.metric.params.radius, s);
+                const int m = static_cast<int>(s.entries.size());
+                const Match best = best_match(g, e.type, e.match, e.source, m, s);
+                if (best.input < 0) continue;
+                matched[c] = best.input;
+                mean_energy[c] = best.mean();
+                s.partner.assign(m, -1);
+                const det::NeighborEntry* in = g.input.neighbors(best.input);
+                pair_greedy(s.entries.data(), m, g.input, best.input, g.input.metric_count[best.input],
+                            g.metric.params, s.pair, s.partner.data(), 1e300);
+                for (int o = 0; o < m; ++o) {
+                    if (s.partner[o] < 0) continue;
+                    const det::NeighborEntry& pi = in[s.partner[o]];
+                    const Vec3 d = s.entries[o].offset - pi.offset;
+                    const double cost = dot(d, d);
+                    Prediction p;
+                    p.other = s.entries[o].element;
+                    p.input = pi.element;
+                    p.offset = frame.rotate(pi.offset);
+                    // Robust weight: a pair further off than the assignment threshold c is more
+                    // likely a wrong pairing (an extra element paired with a free place a spacing
+                    // away) than a displaced neighbour, and must not drag it onto another element.
+                    p.weight = cost > g.metric.threshold2 ? std::pow(g.metric.threshold2 / cost, 2) : 1.0;
+                    p.assigned = cost < g.metric.threshold2;
+                    predictions[c].push_back(p);
+                }
             }
-        }
-    });
+        },
+        kElementsPerThread);
     for (int c = 0; c < n; ++c)
         if (matched[c] >= 0) g.out[u.element[c]].match = matched[c];
 }
@@ -125,7 +129,8 @@ void solve(Grower::Impl& g, const Unknowns& u, const std::vector<std::vector<Pre
                 triplets.emplace_back(o, o, p.weight);
                 triplets.emplace_back(c, o, -p.weight);
                 triplets.emplace_back(o, c, -p.weight);
-                for (int k = 0; k < dims; ++k) b(c, k) -= p.weight * p.offset[k], b(o, k) += p.weight * p.offset[k];
+                for (int k = 0; k < dims; ++k)
+                    b(c, k) -= p.weight * p.offset[k], b(o, k) += p.weight * p.offset[k];
             } else {  // a fixed neighbour: x_v = x_v' - offset
                 const Vec3 fixed = g.out[p.other].p;
                 for (int k = 0; k < dims; ++k) b(c, k) += p.weight * (fixed[k] - p.offset[k]);
@@ -145,7 +150,8 @@ void solve(Grower::Impl& g, const Unknowns& u, const std::vector<std::vector<Pre
         if (!is_finite(p)) continue;
         if (region) {
             g.sample_positions(g.out[v].kept, g.out[v].source, g.out[v].frame, p, samples);
-            if (!std::all_of(samples.begin(), samples.end(), [&](const Vec3& q) { return region->inside(q); }))
+            if (!std::all_of(samples.begin(), samples.end(),
+                             [&](const Vec3& q) { return region->inside(q); }))
                 continue;
         }
         g.move(v, p);
@@ -154,7 +160,8 @@ void solve(Grower::Impl& g, const Unknowns& u, const std::vector<std::vector<Pre
 
 // No neighbour of element v closer than the hard core of its type with `type`.
 bool fits_as(const Grower::Impl& g, int v, int type, std::vector<int>& near) {
-    g.grid.query(g.out[v].p, g.reach, [&](int i) { return g.out[i].p; }, near);
+    g.grid.query(
+        g.out[v].p, g.reach, [&](int i) { return g.out[i].p; }, near);
     for (const int i : near)
         if (i != v && norm(g.out[i].p - g.out[v].p) < g.hard_core(type, g.out[i].type)) return false;
     return true;
@@ -169,7 +176,8 @@ void retype(Grower::Impl& g, int v, int type, int source) {
 
 // V.B: every assigned pair <v', e'> votes for q(e') on v'; v' takes the type with the most
 // votes when it has at least GrowOptions::votes and more than its own type.
-int reassign_by_votes(Grower::Impl& g, const Unknowns& u, const std::vector<std::vector<Prediction>>& predictions) {
+int reassign_by_votes(Grower::Impl& g, const Unknowns& u,
+                      const std::vector<std::vector<Prediction>>& predictions) {
     struct Tally {
         int keep = 0;
         std::vector<int> votes, source;
@@ -228,7 +236,8 @@ int redistribute(Grower::Impl& g) {
         if (have[e.type] - want[e.type] < 1.0) continue;
         int under = -1;
         for (int t = 0; t < types; ++t)
-            if (t != e.type && want[t] - have[t] >= 1.0 && (under < 0 || want[t] - have[t] > want[under] - have[under]))
+            if (t != e.type && want[t] - have[t] >= 1.0 &&
+                (under < 0 || want[t] - have[t] > want[under] - have[under]))
                 under = t;
         if (under < 0 || !fits_as(g, h, under, near)) continue;
         // The input element of that type nearest the match lends its layout.
@@ -252,12 +261,16 @@ OptimizeReport optimize_round(Grower::Impl& g, const Domain* region) {
     if (u.element.empty()) return report;
     std::vector<std::vector<Prediction>> predictions;
     std::vector<double> energy;
+    // Search and assign, `solves` times. The votes and the reported energy come from the
+    // last search: a fresh one after the last solve would cost a third of the round and
+    // changes no measured quality (docs/grow.md), since a solve moves elements a fraction
+    // of c and the pairs that vote are those within c.
+    predict(g, u, predictions, energy);
     for (int k = 0; k < g.options.solves; ++k) {
-        predict(g, u, predictions, energy);
+        if (k > 0) predict(g, u, predictions, energy);
         solve(g, u, predictions, region);
     }
     if (g.options.solves > 0) report.crowded = repair_round(g, u.element, region);
-    predict(g, u, predictions, energy);
     double sum = 0.0;
     int count = 0;
     for (size_t c = 0; c < u.element.size(); ++c)

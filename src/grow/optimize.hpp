@@ -14,7 +14,7 @@ struct OptimizeReport {
     int reassigned = 0;     // types changed by votes (V.B)
     int redistributed = 0;  // types changed by the histograms (V.C)
     int crowded = 0;        // elements still crowding a neighbour after the repair
-    double energy = 0.0;    // mean energy per neighbour of the horizon after the last solve
+    double energy = 0.0;    // mean energy per neighbour of the horizon at the last search
 };
 
 // `region` (may be null) bounds the moves: an element whose samples would leave it stays.

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "det/vacancies.hpp"
+#include "core/parallel.hpp"
 #include "grow/generate.hpp"
 #include "grow/repair.hpp"
 
@@ -23,12 +23,18 @@ std::vector<Vec3> probe_directions(int dimension) {
     for (int x = -1; x <= 1; ++x)
         for (int y = -1; y <= 1; ++y)
             for (int z = -1; z <= 1; ++z)
-                if (x || y || z) dirs.push_back(Vec3{double(x), double(y), double(z)} * (1.0 / std::sqrt(double(x * x + y * y + z * z))));
+                if (x || y || z)
+                    dirs.push_back(Vec3{double(x), double(y), double(z)} *
+                                   (1.0 / std::sqrt(double(x * x + y * y + z * z))));
     return dirs;
 }
 
 // A neighbour within this cosine of a direction covers it.
 constexpr double kCover = 0.5;
+// A hole is enclosed when every direction is covered by an element within this many spacings
+// of its rim: the open side of the horizon is empty much further, while three or four
+// elements around a hole can leave a gap wider than the cover's 120 degrees.
+constexpr double kEnclosureReach = 2.5;
 // Pattern-search levels that centre a probed hole (steps from a quarter spacing, halved).
 constexpr int kCentreLevels = 4;
 // An element goes into a hole whose rim is at least this share of its hard cores away; the
@@ -40,36 +46,133 @@ constexpr double kSqueeze = 0.8;
 // of the small ones).
 constexpr double kOverShareDepth = 1.1;
 
-class HoleFiller {
+// Rounds of search and insertion per call: the later ones probe around the elements just
+// inserted, for the rest of a hole larger than one element.
+constexpr int kPasses = 3;
+
+// An enclosed hole found by the search: its centre and depth (rim-to-rim clearance).
+struct Hole {
+    Vec3 c;
+    double depth = 0.0;
+};
+
+// The search, read-only on the state so that it runs in parallel: the holes next to one
+// element, each centred and tested for enclosure.
+class HoleFinder {
 public:
-    HoleFiller(Grower::Impl& g, const Domain* region)
-        : g_(g), region_(region), dirs_(probe_directions(g.metric.dimension)), spacing_(g.metric.params.spacing),
-          balance_(g), types_(g.exemplar.types.size()) {
-        for (size_t t = 0; t < types_.size(); ++t) types_[t] = static_cast<int>(t);
-        hole_ = det::exemplar_hole_radius(g.exemplar, spacing_, g.metric.params.radius);
+    HoleFinder(const Grower::Impl& g, const Domain* region)
+        : g_(g),
+          region_(region),
+          dirs_(probe_directions(g.metric.dimension)),
+          spacing_(g.metric.params.spacing),
+          hole_(g.hole_radius) {
         for (const Element& e : g.exemplar.elements) max_rim_ = std::max(max_rim_, e.radius);
     }
 
-    int run(int first, int end) {
-        int added = 0;
-        for (int i = first; i < end; ++i) {
-            const Vec3 at = g_.out[i].p;
-            g_.grid.query(at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, near_);
-            for (const Vec3& d : dirs_) {
-                if (covered(at, d, 1.5 * spacing_)) continue;
-                if (try_fill(at + d * (rim(i) + hole_ + 0.25 * spacing_)) == 0) continue;
-                ++added;
-                g_.grid.query(at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, near_);
+    double hole() const { return hole_; }
+    double cap() const { return 3.0 * spacing_; }
+
+    // Buffers of one worker.
+    struct Buffers {
+        std::vector<int> near, probe;
+    };
+
+    // The enclosed holes deeper than the exemplar's in the directions element i has no
+    // neighbour, appended to `out` in the order of the directions.
+    void holes_around(int i, Buffers& b, std::vector<Hole>& out) const {
+        const Vec3 at = g_.out[i].p;
+        g_.grid.query(
+            at, 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, b.near);
+        for (const Vec3& d : dirs_) {
+            if (covered(at, d, 1.5 * spacing_, b.near)) continue;
+            Hole h;
+            if (centred_hole(at + d * (rim(i) + hole_ + 0.25 * spacing_), b, h)) out.push_back(h);
+        }
+    }
+
+    // Rim-to-rim distance from c to the nearest element, at most cap.
+    double clearance(const Vec3& c, double cap) const {
+        double best = cap;
+        g_.grid.for_each_within(
+            c, cap + max_rim_, [&](int j) { return g_.out[j].p; },
+            [&](int j) { best = std::min(best, norm(g_.out[j].p - c) - rim(j)); });
+        return best;
+    }
+
+    double max_rim() const { return max_rim_; }
+
+private:
+    double rim(int i) const {
+        return g_.out[i].kept >= 0 ? g_.existing.elements[g_.out[i].kept].radius
+                                   : g_.exemplar.elements[g_.out[i].source].radius;
+    }
+
+    // A neighbour of `at` (among `near`) within `reach` lies within kCover of direction d.
+    bool covered(const Vec3& at, const Vec3& d, double reach, const std::vector<int>& near) const {
+        for (const int j : near) {
+            const Vec3 v = g_.out[j].p - at;
+            const double l = norm(v);
+            if (l > 1e-12 && l <= reach && dot(v, d) >= kCover * l) return true;
+        }
+        return false;
+    }
+
+    // Pattern search from c to the deepest point nearby; true when that hole is deeper than
+    // the exemplar's, inside the region and enclosed in every direction.
+    bool centred_hole(Vec3 c, Buffers& b, Hole& out) const {
+        if (g_.metric.dimension == 2) c.z = 0.0;
+        double depth = clearance(c, cap());
+        for (int level = 0, step = 0; level < kCentreLevels; ++level) {
+            const double h = 0.25 * spacing_ / (1 << level);
+            for (bool moved = true; moved && step < 8 * kCentreLevels; ++step) {
+                moved = false;
+                for (int k = 0; k < 2 * g_.metric.dimension; ++k) {
+                    Vec3 q = c;
+                    q[k / 2] += (k % 2 ? -h : h);
+                    const double dq = clearance(q, cap());
+                    if (dq > depth) c = q, depth = dq, moved = true;
+                }
             }
         }
-        return added;
+        if (!(depth > hole_) || !(depth < cap()) || (region_ && !region_->inside(c))) return false;
+        const double reach = depth + kEnclosureReach * spacing_;
+        g_.grid.query(
+            c, reach, [&](int j) { return g_.out[j].p; }, b.probe);
+        for (const Vec3& d : dirs_)
+            if (!covered(c, d, reach, b.probe) && !(region_ && !region_->inside(c + d * (depth + spacing_))))
+                return false;
+        out.c = c;
+        out.depth = depth;
+        return true;
     }
+
+    const Grower::Impl& g_;
+    const Domain* region_;
+    std::vector<Vec3> dirs_;
+    double spacing_ = 1.0, hole_ = 0.0, max_rim_ = 0.0;
+};
+
+// The insertion, serial: each hole found, still deeper than the exemplar's once the earlier
+// insertions are in, gets an element.
+class HoleFiller {
+public:
+    HoleFiller(Grower::Impl& g, const HoleFinder& finder)
+        : g_(g), finder_(finder), balance_(g), types_(g.exemplar.types.size()) {}
+
+    // Returns whether an element went into the hole.
+    bool fill(const Hole& hole) {
+        const double depth = finder_.clearance(hole.c, finder_.cap());
+        return depth > finder_.hole() && insert(hole.c, depth);
+    }
+
+    const std::vector<int>& inserted() const { return inserted_; }
 
     // The inserted elements and their unlocked neighbours, sorted (what the repair moves).
     std::vector<int> movable() const {
         std::vector<int> m = inserted_, near;
         for (const int v : inserted_) {
-            g_.grid.query(g_.out[v].p, g_.reach, [&](int j) { return g_.out[j].p; }, near);
+            g_.grid.query(
+                g_.out[v].p, g_.reach, [&](int j) { return g_.out[j].p; }, near);
             for (const int j : near)
                 if (!g_.out[j].locked) m.push_back(j);
         }
@@ -79,73 +182,31 @@ public:
     }
 
 private:
-    double rim(int i) const { return g_.out[i].kept >= 0 ? g_.existing.elements[g_.out[i].kept].radius : g_.exemplar.elements[g_.out[i].source].radius; }
-
-    // A neighbour of `at` (in near_) within `reach` lies within kCover of direction d.
-    bool covered(const Vec3& at, const Vec3& d, double reach) const {
-        for (const int j : near_) {
-            const Vec3 v = g_.out[j].p - at;
-            const double l = norm(v);
-            if (l > 1e-12 && l <= reach && dot(v, d) >= kCover * l) return true;
-        }
-        return false;
-    }
-
-    // Rim-to-rim distance from c to the nearest element, at most cap.
-    double clearance(const Vec3& c, double cap) const {
-        g_.grid.query(c, cap + max_rim_, [&](int j) { return g_.out[j].p; }, probe_);
-        double best = cap;
-        for (const int j : probe_) best = std::min(best, norm(g_.out[j].p - c) - rim(j));
-        return best;
-    }
-
-    int try_fill(Vec3 c) {
-        if (g_.metric.dimension == 2) c.z = 0.0;
-        const double cap = 3.0 * spacing_;
-        double depth = clearance(c, cap);
-        for (int level = 0, step = 0; level < kCentreLevels; ++level) {
-            const double h = 0.25 * spacing_ / (1 << level);
-            for (bool moved = true; moved && step < 8 * kCentreLevels; ++step) {
-                moved = false;
-                for (int k = 0; k < 2 * g_.metric.dimension; ++k) {
-                    Vec3 q = c;
-                    q[k / 2] += (k % 2 ? -h : h);
-                    const double dq = clearance(q, cap);
-                    if (dq > depth) c = q, depth = dq, moved = true;
-                }
-            }
-        }
-        if (!(depth > hole_) || !(depth < cap) || (region_ && !region_->inside(c))) return 0;
-        g_.grid.query(c, depth + 1.5 * spacing_, [&](int j) { return g_.out[j].p; }, probe_);
-        std::swap(near_, probe_);
-        bool enclosed = true;
-        for (const Vec3& d : dirs_)
-            if (!covered(c, d, depth + 1.5 * spacing_) && !(region_ && !region_->inside(c + d * (depth + spacing_))))
-                enclosed = false;
-        std::swap(near_, probe_);
-        if (!enclosed) return 0;
-        return insert(c, depth) ? 1 : 0;
-    }
-
     // The type most short of its share whose hard cores hold at c, copied from the input
     // element of that type nearest the nearest neighbour's match.
     bool insert(const Vec3& c, double depth) {
-        g_.grid.query(c, std::max(g_.reach, depth + max_rim_ + 1e-9), [&](int j) { return g_.out[j].p; }, probe_);
+        g_.grid.query(
+            c, std::max(g_.reach, depth + finder_.max_rim() + 1e-9), [&](int j) { return g_.out[j].p; },
+            probe_);
         if (probe_.empty()) return false;
         int nearest = probe_[0];
         for (const int j : probe_)
             if (norm(g_.out[j].p - c) < norm(g_.out[nearest].p - c)) nearest = j;
         for (size_t t = 0; t < types_.size(); ++t) types_[t] = static_cast<int>(t);  // ties in type order
-        std::stable_sort(types_.begin(), types_.end(), [&](int a, int b) { return balance_.deficit(a) > balance_.deficit(b); });
+        std::stable_sort(types_.begin(), types_.end(),
+                         [&](int a, int b) { return balance_.deficit(a) > balance_.deficit(b); });
         for (const int t : types_) {
-            if (types_.size() > 1 && balance_.deficit(t) < -1e-9 && !(depth > kOverShareDepth * hole_)) continue;
+            if (types_.size() > 1 && balance_.deficit(t) < -1e-9 &&
+                !(depth > kOverShareDepth * finder_.hole()))
+                continue;
             bool fits = true;
             for (const int j : probe_)
                 if (norm(g_.out[j].p - c) < kSqueeze * g_.hard_core(t, g_.out[j].type)) fits = false;
             if (!fits) continue;
             const OutElement& from = g_.out[nearest];
-            const Vec3 near_input = from.match >= 0 ? g_.input.centroid[from.match]
-                                                    : (from.source >= 0 ? g_.input.centroid[from.source] : Vec3{});
+            const Vec3 near_input = from.match >= 0
+                                        ? g_.input.centroid[from.match]
+                                        : (from.source >= 0 ? g_.input.centroid[from.source] : Vec3{});
             const int source = g_.input.nearest_in_pool(t, near_input, 1e300);
             if (source < 0) continue;
             OutElement e;
@@ -164,23 +225,43 @@ private:
     }
 
     Grower::Impl& g_;
-    const Domain* region_;
-    std::vector<Vec3> dirs_;
-    double spacing_ = 1.0, hole_ = 0.0, max_rim_ = 0.0;
+    const HoleFinder& finder_;
     TypeBalance balance_;  // counted once per call, kept up to date by insert()
     std::vector<int> types_;
-    std::vector<int> near_, inserted_;
-    mutable std::vector<int> probe_;
+    std::vector<int> inserted_, probe_;
 };
+
+// The holes around elements `around`, found in parallel, listed in their order.
+std::vector<Hole> find_holes(const Grower::Impl& g, const HoleFinder& finder,
+                             const std::vector<int>& around) {
+    const int n = static_cast<int>(around.size());
+    std::vector<std::vector<Hole>> per(n);
+    core::parallel_for(
+        n, g.threads,
+        [&](int begin, int end, int) {
+            HoleFinder::Buffers b;
+            for (int k = begin; k < end; ++k) finder.holes_around(around[k], b, per[k]);
+        },
+        kElementsPerThread);
+    std::vector<Hole> all;
+    for (const std::vector<Hole>& h : per) all.insert(all.end(), h.begin(), h.end());
+    return all;
+}
 
 }  // namespace
 
 int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region) {
-    for (const Element& e : g.exemplar.elements)
-        if (e.sample_count != 1) return 0;
-    if (first >= end) return 0;
-    HoleFiller filler(g, region);
-    const int added = filler.run(first, end);
+    if (!g.fills_holes || first >= end) return 0;
+    const HoleFinder finder(g, region);
+    HoleFiller filler(g, finder);
+    std::vector<int> around;
+    for (int i = first; i < end; ++i) around.push_back(i);
+    for (int pass = 0; pass < kPasses && !around.empty(); ++pass) {
+        const size_t before = filler.inserted().size();
+        for (const Hole& h : find_holes(g, finder, around)) filler.fill(h);
+        around.assign(filler.inserted().begin() + before, filler.inserted().end());
+    }
+    const int added = static_cast<int>(filler.inserted().size());
     if (added > 0) repair_round(g, filler.movable(), region);
     return added;
 }
