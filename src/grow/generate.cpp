@@ -146,7 +146,7 @@ void remove_displaced(Grower::Impl& g, const std::vector<char>& displaced) {
 
 TypeBalance::TypeBalance(const Grower::Impl& g)
     : g_(g), count_(g.exemplar.types.size(), 0), share_(count_.size(), 0.0) {
-    for (const OutElement& o : g.out) ++count_[o.type];
+    count_ = g.type_count;
     total_ = static_cast<int>(g.out.size());
     for (const Element& e : g.exemplar.elements)
         share_[e.type] += 1.0 / static_cast<double>(g.exemplar.elements.size());

@@ -66,6 +66,7 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
                     [](const Element& e) { return e.sample_count == 1; }))
         hole_radius = det::exemplar_hole_radius(exemplar, metric.params.spacing, metric.params.radius),
         fills_holes = true;
+    type_count.assign(types, 0);
     existing.dimension = exemplar.dimension;
     existing.types = exemplar.types;
 }
@@ -91,6 +92,7 @@ double Grower::Impl::compute_hard_core(int a, int b) const {
 int Grower::Impl::add(const grow::OutElement& e) {
     const int i = static_cast<int>(out.size());
     out.push_back(e);
+    ++type_count[e.type];
     grid.insert(i, e.p);
     dirty = true;
     return i;
@@ -108,9 +110,26 @@ void Grower::Impl::drop_tail(int first, const std::vector<char>& keep) {
     for (int i = first; i < n; ++i) grid.remove(i);
     int w = first;
     for (int i = first; i < n; ++i)
-        if (keep[i - first]) out[w++] = out[i];
+        if (keep[i - first])
+            out[w++] = out[i];
+        else
+            --type_count[out[i].type];
     out.resize(w);
     for (int i = first; i < w; ++i) grid.insert(i, out[i].p);
+    dirty = true;
+}
+
+void Grower::Impl::set_type(int i, int type) {
+    --type_count[out[i].type];
+    ++type_count[type];
+    out[i].type = type;
+    dirty = true;
+}
+
+void Grower::Impl::clear() {
+    out.clear();
+    std::fill(type_count.begin(), type_count.end(), 0);
+    grid = core::DynamicGrid(metric.params.spacing, metric.dimension);
     dirty = true;
 }
 

@@ -76,6 +76,9 @@ struct Grower::Impl {
     bool fills_holes = false;
 
     std::vector<grow::OutElement> out;
+    // Elements of each type in `out`, kept by add, drop_tail, set_type and clear (the type
+    // balance asks for it every round; counting would cost the whole output each time).
+    std::vector<int> type_count;
     core::DynamicGrid grid;
     std::vector<int> horizon;
     // Candidates the energy filter dropped, proposed again next round: their neighbourhood
@@ -112,6 +115,10 @@ struct Grower::Impl {
     double compute_hard_core(int a, int b) const;
     // Appends an element (grid included); returns its index.
     int add(const grow::OutElement& e);
+    // Changes element i's type (the counts included).
+    void set_type(int i, int type);
+    // Removes every element (a fresh output over the same index).
+    void clear();
     // Moves element i to p (grid included).
     void move(int i, const Vec3& p);
     // Removes the elements from index `first` on whose `keep` is 0 (they are the newest).

@@ -25,7 +25,8 @@ std::vector<int> elements_near(const Grower::Impl& g, const Domain& region, doub
     Vec3 half = (b.hi - b.lo) * 0.5;
     if (g.metric.dimension == 2) half.z = 0.0;
     std::vector<int> ids, near;
-    g.grid.query(b.center(), norm(half) + reach, [&](int i) { return g.out[i].p; }, ids);
+    g.grid.query(
+        b.center(), norm(half) + reach, [&](int i) { return g.out[i].p; }, ids);
     for (const int i : ids)
         if (norm(region.closest_inside(g.out[i].p) - g.out[i].p) <= reach) near.push_back(i);
     return near;
@@ -37,10 +38,12 @@ void extend(Box& box, bool& has, const Box& more) {
         has = true;
         return;
     }
-    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], more.lo[k]), box.hi[k] = std::max(box.hi[k], more.hi[k]);
+    for (int k = 0; k < 3; ++k)
+        box.lo[k] = std::min(box.lo[k], more.lo[k]), box.hi[k] = std::max(box.hi[k], more.hi[k]);
 }
 
-void report_progress(Grower::Impl& g, const char* stage, int round, int rounds, double fraction, double energy) {
+void report_progress(Grower::Impl& g, const char* stage, int round, int rounds, double fraction,
+                     double energy) {
     if (!g.progress) return;
     ProgressEvent e;
     e.stage = stage;
@@ -54,7 +57,8 @@ void report_progress(Grower::Impl& g, const char* stage, int round, int rounds, 
 
 // Rounds until `done` says so, no round adds anything, or the bound.
 template <class Done, class Fraction>
-GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done& done, const Fraction& fraction) {
+GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done& done,
+                      const Fraction& fraction) {
     GrowReport report;
     const auto start = Clock::now();
     g.t0 = start;
@@ -92,9 +96,15 @@ Grower::~Grower() = default;
 Grower::Grower(Grower&&) noexcept = default;
 Grower& Grower::operator=(Grower&&) noexcept = default;
 
-void Grower::set_progress(Progress progress) { impl_->progress = std::move(progress); }
-const std::vector<int>& Grower::horizon() const { return impl_->horizon; }
-double Grower::radius() const { return impl_->metric.params.radius; }
+void Grower::set_progress(Progress progress) {
+    impl_->progress = std::move(progress);
+}
+const std::vector<int>& Grower::horizon() const {
+    return impl_->horizon;
+}
+double Grower::radius() const {
+    return impl_->metric.params.radius;
+}
 
 void Grower::seed(const Vec3& center) {
     Impl& g = *impl_;
@@ -103,14 +113,16 @@ void Grower::seed(const Vec3& center) {
     // (all elements when none does), keyed by the seed and the world cell of the centre.
     std::vector<int> interior;
     for (int i = 0; i < in.size(); ++i)
-        if (g.exemplar.domain.distance_to_boundary(in.centroid[i]) >= g.metric.patch_radius) interior.push_back(i);
+        if (g.exemplar.domain.distance_to_boundary(in.centroid[i]) >= g.metric.patch_radius)
+            interior.push_back(i);
     if (interior.empty())
         for (int i = 0; i < in.size(); ++i) interior.push_back(i);
     const double cell = g.metric.params.spacing;
-    const core::KeyedRng rng(g.options.seed, core::Purpose::grow_seed,
-                             static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.x / cell))),
-                             static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.y / cell))) * 1000003u +
-                                 static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.z / cell))));
+    const core::KeyedRng rng(
+        g.options.seed, core::Purpose::grow_seed,
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.x / cell))),
+        static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.y / cell))) * 1000003u +
+            static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.z / cell))));
     const int e = interior[rng.below(0, interior.size())];
     const Quat frame = g.frame_at(center);
     g.horizon.clear();
@@ -148,13 +160,13 @@ void Grower::set_arrangement(const Arrangement& existing) {
         const int t = type_map[e.type];
         for (const Element& x : g.exemplar.elements)
             if (x.type == t && x.sample_count != e.sample_count)
-                throw Error(ErrorKind::input, "existing arrangement: elements of type '" + g.exemplar.types[t].name +
-                                                  "' have " + std::to_string(e.sample_count) +
-                                                  " samples, the exemplar's have " + std::to_string(x.sample_count));
+                throw Error(ErrorKind::input,
+                            "existing arrangement: elements of type '" + g.exemplar.types[t].name +
+                                "' have " + std::to_string(e.sample_count) +
+                                " samples, the exemplar's have " + std::to_string(x.sample_count));
     }
     Impl& h = g;  // a fresh output over the same index
-    h.out.clear();
-    h.grid = core::DynamicGrid(h.metric.params.spacing, h.metric.dimension);
+    h.clear();
     h.horizon.clear();
     h.round = 0;
     h.round_first.clear();
@@ -185,9 +197,10 @@ void Grower::set_arrangement(const Arrangement& existing) {
 GrowReport Grower::grow(const Domain& region) {
     Impl& g = *impl_;
     if (region.dimension() != g.metric.dimension)
-        throw Error(ErrorKind::domain, "region: " + std::to_string(region.dimension()) + "D, the exemplar is " +
-                                           std::to_string(g.metric.dimension) + "D");
-    if (!(region.measure() > 0.0)) throw Error(ErrorKind::domain, "region: it is empty (zero area or volume)");
+        throw Error(ErrorKind::domain, "region: " + std::to_string(region.dimension()) +
+                                           "D, the exemplar is " + std::to_string(g.metric.dimension) + "D");
+    if (!(region.measure() > 0.0))
+        throw Error(ErrorKind::domain, "region: it is empty (zero area or volume)");
     const double reach = g.metric.patch_radius + g.metric.params.radius;
     if (g.out.empty()) {
         seed(region.closest_inside(region.bounds().center()));
@@ -195,17 +208,20 @@ GrowReport Grower::grow(const Domain& region) {
         std::vector<Vec3> samples;
         for (size_t i = 0; i < g.out.size(); ++i) {
             g.sample_positions(-1, g.out[i].source, g.out[i].frame, g.out[i].p, samples);
-            keep[i] = std::all_of(samples.begin(), samples.end(), [&](const Vec3& q) { return region.inside(q); });
+            keep[i] =
+                std::all_of(samples.begin(), samples.end(), [&](const Vec3& q) { return region.inside(q); });
         }
         g.drop_tail(0, keep);
         g.horizon.clear();
         for (size_t i = 0; i < g.out.size(); ++i) g.horizon.push_back(static_cast<int>(i));
-        if (g.out.empty()) throw Error(ErrorKind::domain, "region: too small to hold the exemplar's elements");
+        if (g.out.empty())
+            throw Error(ErrorKind::domain, "region: too small to hold the exemplar's elements");
     } else {
         std::vector<int> near = elements_near(g, region, reach);
         if (near.empty())
             throw Error(ErrorKind::input, "region: it does not touch the arrangement (no element within " +
-                                              std::to_string(reach) + " of it) and growth adds only next to elements");
+                                              std::to_string(reach) +
+                                              " of it) and growth adds only next to elements");
         g.horizon = std::move(near);
     }
     extend(g.grown, g.has_bounds, region.bounds());
@@ -216,11 +232,14 @@ GrowReport Grower::grow(const Domain& region) {
     limits.region = &region;
     GrowReport report = run_rounds(
         g, limits, [](const GrowReport&) { return false; },
-        [&](const GrowReport&) { return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected)); });
+        [&](const GrowReport&) {
+            return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected));
+        });
     // Covered: the last two rounds are enclosed now (by later elements or the region's outside).
     const size_t r = g.round_first.size();
     if (report.covered && r > 0) {
-        const int filled = grow::fill_enclosed_holes(g, g.round_first[r >= 2 ? r - 2 : 0], static_cast<int>(g.out.size()), &region);
+        const int filled = grow::fill_enclosed_holes(g, g.round_first[r >= 2 ? r - 2 : 0],
+                                                     static_cast<int>(g.out.size()), &region);
         report.filled += filled;
         report.added += filled;
         if (filled > 0) g.dirty = true;

@@ -168,8 +168,8 @@ bool fits_as(const Grower::Impl& g, int v, int type, std::vector<int>& near) {
 }
 
 void retype(Grower::Impl& g, int v, int type, int source) {
+    g.set_type(v, type);
     OutElement& e = g.out[v];
-    e.type = type;
     e.source = source;
     e.match = source;
 }
