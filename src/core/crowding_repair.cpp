@@ -241,6 +241,11 @@ double NearestDistanceTails::reach(double tail) const {
     return r;
 }
 
+double NearestDistanceTails::tail_distance(int a, int b, double tail) const {
+    const std::vector<double>& v = distances(a, b);
+    return v.empty() ? 0.0 : lower_quantile(v, bounded_tail(v, tail));
+}
+
 double NearestDistanceTails::reach(int a, double tail) const {
     double r = 0.0;
     for (int b = 0; b < types_; ++b)

@@ -53,6 +53,9 @@ public:
     double reach(double tail) const;
     // The same for the pairs (a, *): as far as a point of type a has to look.
     double reach(int a, double tail) const;
+    // The largest bound a repair holds a point of type a to against its nearest of type b (0
+    // when b never neighbours a): a pair at least this far apart is never repaired.
+    double tail_distance(int a, int b, double tail) const;
     // The smallest exemplar distance of (a, b) or (b, a), or 0 when neither is known:
     // closer than this two points of elements of these types never are.
     double hard_core(int a, int b) const;
@@ -76,11 +79,11 @@ struct CrowdingBounds {
 };
 
 struct CrowdingRepairOptions {
-    double tail = 0.03;  // share of each type's elements (the closest) whose distance is bounded,
-                         // and at least the share of the exemplar's three closest distances
-    double slack = 1.25; // the output may hold this many times the exemplar's share below any distance
-    int rounds = 12;     // repair rounds at most
-    int threads = 1;     // worker threads (0 = all); results are the same for any value
+    double tail = 0.03;   // share of each type's elements (the closest) whose distance is bounded,
+                          // and at least the share of the exemplar's three closest distances
+    double slack = 1.25;  // the output may hold this many times the exemplar's share below any distance
+    int rounds = 12;      // repair rounds at most
+    int threads = 1;      // worker threads (0 = all); results are the same for any value
     // Elements whose level along `level_axis` must not change (floor elements that keep their
     // elevation): per element, non-zero = held; empty = none. Their moves keep to the plane.
     std::vector<char> held_level;
@@ -89,9 +92,9 @@ struct CrowdingRepairOptions {
 };
 
 struct CrowdingRepairReport {
-    int moved = 0;        // element moves made
-    int rounds = 0;       // rounds run
-    int remaining = 0;    // elements still closer than their bound after the last round
+    int moved = 0;           // element moves made
+    int rounds = 0;          // rounds run
+    int remaining = 0;       // elements still closer than their bound after the last round
     bool bound_hit = false;  // stopped by `rounds` with violations left
 };
 

@@ -55,7 +55,8 @@ Match best_match(const Grower::Impl& g, int type, int own, int shape_of, int m, 
         for (int k = in.sim_start[c]; k < in.sim_start[c + 1]; ++k)
             if (in.type[in.sim[k]] == type) s.candidates.push_back(in.sim[k]);
     };
-    add_with_set(own >= 0 ? in.nearest_in_pool(type, in.centroid[own], g.metric.params.spacing) : -1);
+    const int mine = own >= 0 ? in.nearest_in_pool(type, in.centroid[own], g.metric.params.spacing) : -1;
+    add_with_set(mine);
     // Where the element was copied from: coherent with its own layout even when its
     // neighbourhood is still one-sided (a frontier element, whose few neighbours fit
     // mirror places of the exemplar as well).
@@ -80,8 +81,13 @@ Match best_match(const Grower::Impl& g, int type, int own, int shape_of, int m, 
     Match best;
     best.neighbors = m;
     double best_cost = 1e300;
-    if (from >= 0) {  // tried first, so that it wins ties (it is in the list once)
-        const auto it = std::find(s.candidates.begin(), s.candidates.end(), from);
+    // The order candidates are tried in decides ties (the first wins) and how soon the bound
+    // prunes. Without neighbours every cost ties: where the element was copied from wins.
+    // With neighbours (no ties in practice) its last match goes first: it is usually still
+    // the best, and its cost makes most others stop after a row or two.
+    for (const int first : {from, m > 0 ? mine : -1}) {
+        if (first < 0) continue;
+        const auto it = std::find(s.candidates.begin(), s.candidates.end(), first);
         if (it != s.candidates.end()) std::rotate(s.candidates.begin(), it, it + 1);
     }
     for (const int c : s.candidates) {

@@ -25,7 +25,8 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
     std::unordered_set<int> in(movable.begin(), movable.end());
     std::vector<int> near;
     for (const int v : movable) {
-        g.grid.query(g.out[v].p, reach, [&](int i) { return g.out[i].p; }, near);
+        g.grid.query(
+            g.out[v].p, reach, [&](int i) { return g.out[i].p; }, near);
         for (const int i : near)
             if (in.insert(i).second) members.push_back(i);
     }
@@ -39,7 +40,8 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
         const OutElement& o = g.out[members[k]];
         g.sample_positions(o.kept, o.source, o.frame, o.p, samples);
         const int e = part.add_element(o.type, samples);
-        part.elements[e].radius = o.kept >= 0 ? g.existing.elements[o.kept].radius : g.exemplar.elements[o.source].radius;
+        part.elements[e].radius =
+            o.kept >= 0 ? g.existing.elements[o.kept].radius : g.exemplar.elements[o.source].radius;
         part.elements[e].locked = k >= movable.size() || o.locked;
         for (const Vec3& q : samples)
             for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], q[a]), hi[a] = std::max(hi[a], q[a]);
@@ -50,7 +52,8 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
     const Domain around = Domain::box(blo, bhi, part.dimension);
     core::CrowdingRepairOptions options;
     options.threads = g.threads;  // the same result for any count
-    const core::CrowdingRepairReport report = core::repair_crowding(part, region ? *region : around, g.bounds, options);
+    const core::CrowdingRepairReport report =
+        core::repair_crowding(part, region ? *region : around, g.bounds, options);
     for (size_t k = 0; k < movable.size(); ++k) {
         const Element& e = part.elements[k];
         if (e.locked) continue;
@@ -59,6 +62,32 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
         g.move(movable[k], c * (1.0 / e.sample_count));
     }
     return report.remaining;
+}
+
+// Whether some movable element has a neighbour closer than the farthest bound a repair
+// holds their types to. When none has, a repair would find nothing to move (every bound
+// it checks lies below that one): the part is skipped, which saves building it. Centroid
+// bounds only, so for exemplars of single-sample elements.
+bool may_crowd(const Grower::Impl& g, const std::vector<int>& movable) {
+    const core::CrowdingRepairOptions defaults;
+    const core::NearestDistanceTails& tails = g.bounds.centroids;
+    const int types = tails.types();
+    double reach = 0.0;
+    std::vector<double> bound(static_cast<size_t>(types) * types);
+    for (int a = 0; a < types; ++a)
+        for (int b = 0; b < types; ++b)
+            reach = std::max(reach, bound[a * types + b] = tails.tail_distance(a, b, defaults.tail));
+    bool close = false;
+    for (const int v : movable) {
+        const OutElement& e = g.out[v];
+        g.grid.for_each_within(
+            e.p, reach, [&](int i) { return g.out[i].p; },
+            [&](int i) {
+                if (i != v && norm(g.out[i].p - e.p) < bound[e.type * types + g.out[i].type]) close = true;
+            });
+        if (close) return true;
+    }
+    return false;
 }
 
 }  // namespace
@@ -70,11 +99,13 @@ int repair_round(Grower::Impl& g, const std::vector<int>& movable, const Domain*
     std::map<std::array<long long, 3>, std::vector<int>> tiles;  // ordered: a fixed order of parts
     for (const int v : movable) {
         std::array<long long, 3> key{0, 0, 0};
-        for (int k = 0; k < g.metric.dimension; ++k) key[k] = static_cast<long long>(std::floor(g.out[v].p[k] / tile));
+        for (int k = 0; k < g.metric.dimension; ++k)
+            key[k] = static_cast<long long>(std::floor(g.out[v].p[k] / tile));
         tiles[key].push_back(v);
     }
     int remaining = 0;
-    for (const auto& [key, part] : tiles) remaining += repair_part(g, part, region, reach);
+    for (const auto& [key, part] : tiles)
+        if (g.bounds.has_samples || may_crowd(g, part)) remaining += repair_part(g, part, region, reach);
     return remaining;
 }
 
