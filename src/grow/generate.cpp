@@ -197,29 +197,32 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
     // crowd: existing ones into `blocking`; returns true when a taken candidate is crowded
     // (then `blocking` is left empty: most candidates merge with a taken one, and the
     // existing elements need not be looked at for them).
+    // Neither answer depends on the order neighbours are visited in (unsorted queries).
     auto crowds = [&](const Vec3& p, int t, const std::vector<Vec3>& mine, std::vector<int>& blocking) {
         blocking.clear();
-        taken_grid.query(
-            p, reach, [&](int i) { return kept[i].p; }, near);
-        for (const int i : near) {
-            if (norm(kept[i].p - p) < merge * g.hard_core(t, kept[i].type)) return true;
-            if (by_samples && samples_clash(mine, kept_samples[i], merge * g.sample_core(t, kept[i].type)))
-                return true;
-        }
-        g.grid.query(
-            p, reach, [&](int i) { return g.out[i].p; }, near);
-        for (const int i : near) {
-            if (i >= g.recent_first && displaced[i - g.recent_first]) continue;
-            const OutElement& o = g.out[i];
-            Vec3 d = o.p - p;
-            if (g.metric.dimension == 2) d.z = 0.0;
-            bool hit = norm(d) < g.hard_core(t, o.type);
-            if (!hit && by_samples) {
-                g.sample_positions(o.kept, o.source, o.frame, o.p, theirs);
-                hit = samples_clash(mine, theirs, g.sample_core(t, o.type));
-            }
-            if (hit) blocking.push_back(i);
-        }
+        bool merges = false;
+        taken_grid.for_each_within(
+            p, reach, [&](int i) { return kept[i].p; },
+            [&](int i) {
+                merges = merges || norm(kept[i].p - p) < merge * g.hard_core(t, kept[i].type) ||
+                         (by_samples &&
+                          samples_clash(mine, kept_samples[i], merge * g.sample_core(t, kept[i].type)));
+            });
+        if (merges) return true;
+        g.grid.for_each_within(
+            p, reach, [&](int i) { return g.out[i].p; },
+            [&](int i) {
+                if (i >= g.recent_first && displaced[i - g.recent_first]) return;
+                const OutElement& o = g.out[i];
+                Vec3 d = o.p - p;
+                if (g.metric.dimension == 2) d.z = 0.0;
+                bool hit = norm(d) < g.hard_core(t, o.type);
+                if (!hit && by_samples) {
+                    g.sample_positions(o.kept, o.source, o.frame, o.p, theirs);
+                    hit = samples_clash(mine, theirs, g.sample_core(t, o.type));
+                }
+                if (hit) blocking.push_back(i);
+            });
         return false;
     };
     // The push that takes a candidate of type t at p out of the hard cores of the elements and
