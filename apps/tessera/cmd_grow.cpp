@@ -116,8 +116,12 @@ void run_grow(GrowArgs& args) {
         pictures.emplace(args.rounds_dir, *region);
     }
     tessera::Progress progress = status.progress([] { return !interrupt_requested(); }, "round");
+    int pictured = -2;  // the last round pictured: a round's event is re-sent while the next one runs
     grower.set_progress([&](const tessera::ProgressEvent& e) {
-        if (pictures && e.stage == "round") pictures->add(grower.arrangement());
+        if (pictures && e.stage == "round" && e.iteration != pictured) {
+            pictures->add(grower.arrangement());
+            pictured = e.iteration;
+        }
         return progress(e);
     });
     tessera::GrowReport report;

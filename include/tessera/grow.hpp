@@ -59,7 +59,7 @@ struct GrowOptions {
     // Weight of the pull toward the current position at the lock distance (Eq. 7's w);
     // it rises linearly from 0 at the horizon.
     double band_weight = 4.0;
-    // Least-squares solves (each after a fresh match) per round.
+    // Least-squares solves per round: one search, then a pairing with its matches before each.
     int solves = 2;
     // Votes an element needs before its type is reassigned (section V.B).
     int votes = 2;
@@ -82,18 +82,18 @@ struct GrowOptions {
 // What one call did.
 struct GrowReport {
     int rounds = 0;
-    int added = 0;             // net: elements made less elements displaced
-    int candidates = 0;        // proposed, before the filters
-    int merged = 0;            // dropped as overlapping
-    int high_energy = 0;       // dropped by the energy filter
-    int outside = 0;           // dropped outside the target region
-    int reassigned = 0;        // types changed by votes or redistribution
-    int last_made = 0;         // elements the last round made (before displacements)
-    int displaced = 0;         // recent elements a candidate of a type short of its share replaced
-    int filled = 0;            // elements put into enclosed holes behind the horizon
-    bool covered = false;      // grow(region): the region took no more elements
-    bool bound_hit = false;    // the round bound (GrowOptions::max_rounds) stopped the call
-    double energy = 0.0;       // mean neighbourhood energy of the last round's horizon (Eq. 4 / |H|)
+    int added = 0;           // net: elements made (the seed patch included) less elements displaced
+    int candidates = 0;      // proposed, before the filters
+    int merged = 0;          // dropped as overlapping
+    int high_energy = 0;     // dropped by the energy filter
+    int outside = 0;         // dropped outside the target region
+    int reassigned = 0;      // types changed by votes or redistribution
+    int last_made = 0;       // elements the last round made (before displacements)
+    int displaced = 0;       // recent elements a candidate of a type short of its share replaced
+    int filled = 0;          // elements put into enclosed holes behind the horizon
+    bool covered = false;    // grow(region): the region took no more elements
+    bool bound_hit = false;  // the round bound (GrowOptions::max_rounds) stopped the call
+    double energy = 0.0;     // mean neighbourhood energy of the last round's horizon (Eq. 4 / |H|)
     double seconds = 0.0;
 };
 
@@ -125,7 +125,15 @@ public:
     // One round, unbounded (no region).
     GrowReport step();
 
+    // Progress events at the start, after each round and at the end; the last one is also
+    // re-sent about every 50 ms inside a round (tessera/progress.hpp). A callback returning
+    // false cancels: the call throws Cancelled within about 0.1 s, and the arrangement stays
+    // valid, with every round finished before (a round cancelled during its optimization
+    // keeps its elements as far as they were optimized; one cancelled earlier is undone).
     void set_progress(Progress progress);
+    // The report of the last grow call or step, also of one that was cancelled (up to its
+    // last finished round).
+    const GrowReport& last_report() const;
 
     const Arrangement& arrangement() const;
     // Indices of the current horizon's elements.

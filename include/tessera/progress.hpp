@@ -1,7 +1,7 @@
 // tessera/progress.hpp — how long runs report progress and accept cancellation.
 // The library never prints; it calls this (from the calling thread only): at the start and
 // end of each step, and during a long step (the neighbourhood method's initialization and
-// search) about every 50 ms, re-sending the step's last event with a new elapsed_s, so that
+// search, a growth round) about every 50 ms, re-sending the step's last event with a new elapsed_s, so that
 // a cancel takes effect within about 0.1 s. Returning false cancels: the method throws
 // Cancelled. A repeated event carries no news; count steps by (stage, iteration).
 #pragma once

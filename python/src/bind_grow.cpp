@@ -189,6 +189,10 @@ void bind_grow(py::module_& m) {
             "horizon", [](const PyGrower& g) { return horizon_of(reading(g)); },
             "Indices of the current horizon's elements (into the arrangement's elements).")
         .def_property_readonly(
+            "last_report", [](const PyGrower& g) { return report_of(reading(g).last_report()); },
+            "The report of the last grow call or step, also of one that was cancelled (up to its last "
+            "finished round).")
+        .def_property_readonly(
             "radius", [](const PyGrower& g) { return reading(g).radius(); },
             "The neighbourhood radius in use (the automatic one when radius=0 was given).")
         .def("__len__", [](const PyGrower& g) { return reading(g).arrangement().elements.size(); });

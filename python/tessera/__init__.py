@@ -191,7 +191,8 @@ class Grower(_tessera.Grower):
     each grow call returns a report dict (rounds, added, candidates, merged, high_energy,
     outside, reassigned, last_made, displaced, filled, covered, bound_hit, energy, seconds).
     Properties: arrangement (an Arrangement), locked (E booleans), horizon (indices of the
-    current horizon's elements), radius (the radius in use), len(grower).
+    current horizon's elements), radius (the radius in use), last_report (the report of the
+    last call, also of a cancelled one), len(grower).
 
     Raises OptionError naming the keyword (``energy_factor must be a number > 1, got
     0.5``), InputError for an invalid exemplar. The GIL is released while it grows; a

@@ -43,10 +43,11 @@ std::vector<Candidate> propose(Grower::Impl& g, double extent) {
     const double gather = extent + std::sqrt(g.metric.threshold2);
     core::parallel_for(
         n, g.threads,
-        [&](int begin, int end, int) {
+        [&](int begin, int end, int thread) {
             Scratch s;
             std::vector<char> taken;
             for (int k = begin; k < end; ++k) {
+                g.interrupt.check(thread);
                 const int h = g.horizon[k];
                 const OutElement& he = g.out[h];
                 const Quat frame = g.frame_at(he.p);
@@ -309,6 +310,7 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
                g.hard_core(candidates[order[end]].type, candidates[order[end]].type) == core)
             ++end;
         for (size_t k = begin; k < end; ++k) {
+            g.interrupt.check(0);
             const Candidate& c = candidates[order[k]];
             if (!take(c) && !by_samples && balance.is_short(c.type)) deferred.push_back(c);
         }
@@ -344,9 +346,10 @@ int drop_high_energy(Grower::Impl& g, int first, double t, double& mean,
     std::vector<int> matched(n, -1);
     core::parallel_for(
         n, g.threads,
-        [&](int begin, int end, int) {
+        [&](int begin, int end, int thread) {
             Scratch s;
             for (int k = begin; k < end; ++k) {
+                g.interrupt.check(thread);
                 const OutElement& e = g.out[first + k];
                 gather_output(g, e.p, e.frame, first + k, g.metric.params.radius, s);
                 const Match m =

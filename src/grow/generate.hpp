@@ -39,7 +39,6 @@ private:
     int total_ = 0;
 };
 
-
 // For each horizon element h: its best input element e (also stored as its match), then
 // the input neighbours e' of e within `extent` that the partial pair assignment leaves
 // without an output partner closer than c, as candidates at p(h) + o(h)(p(e') - p(e)).

@@ -8,6 +8,7 @@
 
 #include "core/crowding_repair.hpp"
 #include "core/dynamic_grid.hpp"
+#include "core/interrupt.hpp"
 #include "grow/input_elements.hpp"
 #include "grow/pairing.hpp"
 #include "tessera/grow.hpp"
@@ -97,6 +98,13 @@ struct Grower::Impl {
     bool has_bounds = false;
 
     Progress progress;
+    ProgressEvent last_event;  // the last event sent, sent again by the interrupt's polls
+    // Polled inside a round's long loops (core/interrupt.hpp): a cancel takes effect within
+    // about 0.1 s, not only between rounds (a round of a large 3D growth takes most of a second).
+    core::Interrupt interrupt{[this] {
+        if (progress && !progress(last_event)) throw Cancelled();
+    }};
+    GrowReport last_report;  // of the last call, kept up to date round by round
     std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
     mutable Arrangement view;  // arrangement(), rebuilt when `dirty`
     mutable bool dirty = true;

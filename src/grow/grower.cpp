@@ -52,16 +52,25 @@ void report_progress(Grower::Impl& g, const char* stage, int round, int rounds, 
     e.energy = energy;
     e.elapsed_s = std::chrono::duration<double>(Clock::now() - g.t0).count();
     e.fraction = std::clamp(fraction, 0.0, 1.0);
+    g.last_event = e;
     if (!g.progress(e)) throw Cancelled();
 }
 
 // Rounds until `done` says so, no round adds anything, or the bound.
 template <class Done, class Fraction>
 GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done& done,
-                      const Fraction& fraction) {
+                      const Fraction& fraction, int seeded) {
     GrowReport report;
+    report.added = seeded;  // the seed patch is made by this call too
     const auto start = Clock::now();
     g.t0 = start;
+    g.interrupt.rearm();
+    // Kept up to date so that a cancelled call's report survives (Grower::last_report).
+    auto keep = [&] {
+        report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        g.last_report = report;
+    };
+    keep();
     report_progress(g, "round", -1, g.options.max_rounds, 0.0, 0.0);
     int stalled = 0;
     for (;;) {
@@ -71,9 +80,10 @@ GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done
             break;
         }
         grow::RoundLimits limits = base;
-        if (base.budget >= 0) limits.budget = base.budget - report.added;
-        const int added = grow::run_round(g, limits, report);
+        if (base.budget >= 0) limits.budget = base.budget - (report.added - seeded);
+        const int added = grow::run_round(g, limits, report);  // a cancel leaves last_report as it was
         ++report.rounds;
+        keep();
         report_progress(g, "round", report.rounds - 1, g.options.max_rounds, fraction(report), report.energy);
         // Covered when a round makes nothing; a few rounds in a row that only displace as many
         // as they make would cycle.
@@ -84,7 +94,7 @@ GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done
         }
     }
     report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
-    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    keep();
     return report;
 }
 
@@ -202,6 +212,7 @@ GrowReport Grower::grow(const Domain& region) {
     if (!(region.measure() > 0.0))
         throw Error(ErrorKind::domain, "region: it is empty (zero area or volume)");
     const double reach = g.metric.patch_radius + g.metric.params.radius;
+    int seeded = 0;
     if (g.out.empty()) {
         seed(region.closest_inside(region.bounds().center()));
         std::vector<char> keep(g.out.size());
@@ -216,6 +227,7 @@ GrowReport Grower::grow(const Domain& region) {
         for (size_t i = 0; i < g.out.size(); ++i) g.horizon.push_back(static_cast<int>(i));
         if (g.out.empty())
             throw Error(ErrorKind::domain, "region: too small to hold the exemplar's elements");
+        seeded = static_cast<int>(g.out.size());
     } else {
         std::vector<int> near = elements_near(g, region, reach);
         if (near.empty())
@@ -234,7 +246,8 @@ GrowReport Grower::grow(const Domain& region) {
         g, limits, [](const GrowReport&) { return false; },
         [&](const GrowReport&) {
             return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected));
-        });
+        },
+        seeded);
     // Covered: the last two rounds are enclosed now (by later elements or the region's outside).
     const size_t r = g.round_first.size();
     if (report.covered && r > 0) {
@@ -244,6 +257,7 @@ GrowReport Grower::grow(const Domain& region) {
         report.added += filled;
         if (filled > 0) g.dirty = true;
     }
+    g.last_report = report;
     return report;
 }
 
@@ -251,28 +265,41 @@ GrowReport Grower::grow(int n) {
     Impl& g = *impl_;
     if (n <= 0) throw Error(ErrorKind::option, "elements: must be > 0");
     Vec3 origin;
+    int seeded = 0;
     if (g.out.empty()) {
         seed(Vec3{});
-        n -= static_cast<int>(g.out.size());
+        seeded = static_cast<int>(g.out.size());
     }
     for (const grow::OutElement& e : g.out) origin = origin + e.p;
     origin = origin * (1.0 / g.out.size());
     grow::RoundLimits limits;
-    limits.budget = std::max(0, n);
+    limits.budget = std::max(0, n - seeded);  // what the rounds may add
     limits.origin = origin;
     return run_rounds(
         g, limits, [&](const GrowReport& r) { return r.added >= n; },
-        [&](const GrowReport& r) { return static_cast<double>(r.added) / std::max(1, n); });
+        [&](const GrowReport& r) { return static_cast<double>(r.added) / n; }, seeded);
 }
 
 GrowReport Grower::step() {
     Impl& g = *impl_;
+    const auto start = Clock::now();
     GrowReport report;
-    if (g.out.empty()) seed(Vec3{});
+    if (g.out.empty()) {
+        seed(Vec3{});
+        report.added = static_cast<int>(g.out.size());
+    }
+    g.interrupt.rearm();
+    const int before = report.added;
     grow::run_round(g, grow::RoundLimits{}, report);
     report.rounds = 1;
-    report.covered = report.added == 0;
+    report.covered = report.added == before;
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    g.last_report = report;
     return report;
+}
+
+const GrowReport& Grower::last_report() const {
+    return impl_->last_report;
 }
 
 const Arrangement& Grower::arrangement() const {

@@ -31,8 +31,8 @@ struct Node {
 
 struct Problem {
     std::vector<Candidate> c;
-    std::vector<std::vector<int>> conflicts;  // closer than their hard core
-    std::vector<std::vector<int>> near;       // other candidates within r
+    std::vector<std::vector<int>> conflicts;             // closer than their hard core
+    std::vector<std::vector<int>> near;                  // other candidates within r
     std::vector<std::vector<det::NeighborEntry>> fixed;  // existing elements within r
 };
 
@@ -49,11 +49,13 @@ Problem build_problem(const Grower::Impl& g, std::vector<Candidate> candidates) 
     std::vector<int> ids;
     Scratch s;
     for (int i = 0; i < n; ++i) {
-        grid.query(p.c[i].p, r, [&](int j) { return p.c[j].p; }, ids);
+        grid.query(
+            p.c[i].p, r, [&](int j) { return p.c[j].p; }, ids);
         for (const int j : ids) {
             if (j == i) continue;
             p.near[i].push_back(j);
-            if (norm(p.c[j].p - p.c[i].p) < g.hard_core(p.c[i].type, p.c[j].type)) p.conflicts[i].push_back(j);
+            if (norm(p.c[j].p - p.c[i].p) < g.hard_core(p.c[i].type, p.c[j].type))
+                p.conflicts[i].push_back(j);
         }
         gather_output(g, p.c[i].p, p.c[i].frame, -1, r, s);
         p.fixed[i] = s.entries;
@@ -111,7 +113,8 @@ SearchReport choose_by_tree_search(const Grower::Impl& g, std::vector<Candidate>
     double best_score = 1e300, worst = 0.0;
     Scratch s;
     std::vector<int> path, order;
-    const core::KeyedRng rng(g.options.seed, core::Purpose::grow_playout, static_cast<std::uint64_t>(g.round));
+    const core::KeyedRng rng(g.options.seed, core::Purpose::grow_playout,
+                             static_cast<std::uint64_t>(g.round));
     for (int playout = 0; playout < g.options.playouts; ++playout) {
         taken.assign(n, 0);
         blocked.assign(n, 0);
@@ -128,16 +131,22 @@ SearchReport choose_by_tree_search(const Grower::Impl& g, std::vector<Candidate>
                 const int fresh = static_cast<int>(tree.size());
                 tree[node].child[branch] = fresh;
                 tree.emplace_back();
-                if (branch == 0) take(p, depth, taken, blocked);
-                else blocked[depth] = 1;
+                if (branch == 0)
+                    take(p, depth, taken, blocked);
+                else
+                    blocked[depth] = 1;
                 path.push_back(fresh);
                 break;
             }
-            const double v0 = selection_value(tree[here.child[0]], here.visits, g.options.explore, g.options.exploit);
-            const double v1 = selection_value(tree[here.child[1]], here.visits, g.options.explore, g.options.exploit);
+            const double v0 =
+                selection_value(tree[here.child[0]], here.visits, g.options.explore, g.options.exploit);
+            const double v1 =
+                selection_value(tree[here.child[1]], here.visits, g.options.explore, g.options.exploit);
             branch = v1 > v0 ? 1 : 0;
-            if (branch == 0) take(p, depth, taken, blocked);
-            else blocked[depth] = 1;
+            if (branch == 0)
+                take(p, depth, taken, blocked);
+            else
+                blocked[depth] = 1;
             node = tree[node].child[branch];
             path.push_back(node);
         }

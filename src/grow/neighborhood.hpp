@@ -8,7 +8,8 @@ namespace tessera::grow {
 
 // Elements within `radius` of p other than `self`, as entries relative to p in the local
 // frame `frame` (nearest first, ties by index), into s.entries (element index in .element).
-void gather_output(const Grower::Impl& g, const Vec3& p, const Quat& frame, int self, double radius, Scratch& s);
+void gather_output(const Grower::Impl& g, const Vec3& p, const Quat& frame, int self, double radius,
+                   Scratch& s);
 
 struct Match {
     int input = -1;       // best input element, -1 when none of the type exists

@@ -61,27 +61,38 @@ Unknowns collect_unknowns(const Grower::Impl& g) {
     return u;
 }
 
-// Each unknown's best match and the predictions its pairs make (Eq. 6), in parallel.
+// Whether predict searches for each unknown's best match or pairs it again with the match
+// the last search found (the assignment step alone, after a solve moved it).
+enum class Search { fresh, keep };
+
+// Each unknown's best match and the predictions its pairs make (Eq. 6), in parallel; with
+// Search::keep, `mean_energy` stays the last search's.
 void predict(Grower::Impl& g, const Unknowns& u, std::vector<std::vector<Prediction>>& predictions,
-             std::vector<double>& mean_energy) {
+             std::vector<double>& mean_energy, Search search) {
     const int n = static_cast<int>(u.element.size());
     predictions.assign(n, {});
-    mean_energy.assign(n, 0.0);
+    if (search == Search::fresh) mean_energy.assign(n, 0.0);
     std::vector<int> matched(n, -1);
     core::parallel_for(
         n, g.threads,
-        [&](int begin, int end, int) {
+        [&](int begin, int end, int thread) {
             Scratch s;
             for (int c = begin; c < end; ++c) {
+                g.interrupt.check(thread);
                 const int v = u.element[c];
                 const OutElement& e = g.out[v];
                 const Quat frame = g.frame_at(e.p);
                 gather_output(g, e.p, frame, v, g.metric.params.radius, s);
                 const int m = static_cast<int>(s.entries.size());
-                const Match best = best_match(g, e.type, e.match, e.source, m, s);
-                if (best.input < 0) continue;
-                matched[c] = best.input;
-                mean_energy[c] = best.mean();
+                Match best;
+                if (search == Search::keep && e.match >= 0) {
+                    best.input = e.match;
+                } else {
+                    best = best_match(g, e.type, e.match, e.source, m, s);
+                    if (best.input < 0) continue;
+                    matched[c] = best.input;
+                    mean_energy[c] = best.mean();
+                }
                 s.partner.assign(m, -1);
                 const det::NeighborEntry* in = g.input.neighbors(best.input);
                 pair_greedy(s.entries.data(), m, g.input, best.input, g.input.metric_count[best.input],
@@ -261,13 +272,14 @@ OptimizeReport optimize_round(Grower::Impl& g, const Domain* region) {
     if (u.element.empty()) return report;
     std::vector<std::vector<Prediction>> predictions;
     std::vector<double> energy;
-    // Search and assign, `solves` times. The votes and the reported energy come from the
-    // last search: a fresh one after the last solve would cost a third of the round and
-    // changes no measured quality (docs/grow.md), since a solve moves elements a fraction
-    // of c and the pairs that vote are those within c.
-    predict(g, u, predictions, energy);
+    // One search, then `solves` assignments and solves: the first pairs the search's matches,
+    // the later ones pair the same matches again at the moved positions. A search after
+    // each solve (the matches rarely change: a solve moves elements a fraction of c) and
+    // after the last one cost two thirds of the round and changed no measured quality
+    // (docs/grow.md). The votes come from the last pairing, the reported energy from the search.
+    predict(g, u, predictions, energy, Search::fresh);
     for (int k = 0; k < g.options.solves; ++k) {
-        if (k > 0) predict(g, u, predictions, energy);
+        if (k > 0) predict(g, u, predictions, energy, Search::keep);
         solve(g, u, predictions, region);
     }
     if (g.options.solves > 0) report.crowded = repair_round(g, u.element, region);

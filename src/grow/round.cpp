@@ -34,8 +34,9 @@ void keep_nearest(std::vector<Candidate>& candidates, const Vec3& origin, int bu
 int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     ++g.round;
     const size_t rounds = g.round_first.size();
-    g.recent_first = rounds >= kDisplaceRounds ? g.round_first[rounds - kDisplaceRounds]
-                                               : (rounds > 0 ? g.round_first[0] : static_cast<int>(g.out.size()));
+    g.recent_first = rounds >= kDisplaceRounds
+                         ? g.round_first[rounds - kDisplaceRounds]
+                         : (rounds > 0 ? g.round_first[0] : static_cast<int>(g.out.size()));
     g.displaced = 0;
     std::vector<Candidate> candidates = propose(g, g.metric.patch_radius);
     report.candidates += static_cast<int>(candidates.size());
@@ -54,7 +55,12 @@ int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     const int first = add_candidates(g, candidates);
     double mean = 0.0;
     std::vector<Candidate> dropped;
-    report.high_energy += drop_high_energy(g, first, g.options.energy_factor, mean, dropped);
+    try {
+        report.high_energy += drop_high_energy(g, first, g.options.energy_factor, mean, dropped);
+    } catch (const Cancelled&) {  // the round's elements are not set up yet: it never happened
+        g.drop_tail(first, std::vector<char>(g.out.size() - first, 0));
+        throw;
+    }
     for (const Candidate& c : dropped)
         if (c.tries <= kRetries) g.retry.push_back(c);
     const int added = static_cast<int>(g.out.size()) - first;
@@ -71,7 +77,8 @@ int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     report.energy = opt.unknowns > 0 ? opt.energy : mean;
     // The round two back is enclosed by now: its holes are filled.
     const size_t r = g.round_first.size();
-    const int filled = r >= 3 ? fill_enclosed_holes(g, g.round_first[r - 3], g.round_first[r - 2], limits.region) : 0;
+    const int filled =
+        r >= 3 ? fill_enclosed_holes(g, g.round_first[r - 3], g.round_first[r - 2], limits.region) : 0;
     report.filled += filled;
     report.added += added - g.displaced + filled;
     report.displaced += g.displaced;

@@ -238,9 +238,12 @@ std::vector<Hole> find_holes(const Grower::Impl& g, const HoleFinder& finder,
     std::vector<std::vector<Hole>> per(n);
     core::parallel_for(
         n, g.threads,
-        [&](int begin, int end, int) {
+        [&](int begin, int end, int thread) {
             HoleFinder::Buffers b;
-            for (int k = begin; k < end; ++k) finder.holes_around(around[k], b, per[k]);
+            for (int k = begin; k < end; ++k) {
+                g.interrupt.check(thread);
+                finder.holes_around(around[k], b, per[k]);
+            }
         },
         kElementsPerThread);
     std::vector<Hole> all;

@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "quality_data.hpp"
@@ -311,6 +315,64 @@ TEST(Grow, TheSameSeedGivesTheSameArrangementForAnyThreadCount) {
             EXPECT_EQ(outs[k].samples[s].p.y, outs[0].samples[s].p.y);
         }
     }
+}
+
+TEST(Grow, TheSeedPatchCountsAsAddedAndAStepIsTimed) {
+    const Exemplar ex = example("poisson_disk_2d");
+    Grower g(ex);
+    const GrowReport first = g.grow(centred_box(ex, 6.0));
+    EXPECT_EQ(first.added, static_cast<int>(g.arrangement().elements.size()));
+    Grower s(ex);
+    const GrowReport step = s.step();
+    EXPECT_EQ(step.added, static_cast<int>(s.arrangement().elements.size()));
+    EXPECT_GT(step.seconds, 0.0);
+    EXPECT_EQ(s.last_report().added, step.added);
+}
+
+// A cancel is polled inside rounds: a 3D growth on one thread (by round 22, rounds of about
+// 0.2 s) stops within about 0.1 s of the request (0.15 s allowed here), its report up to the
+// last finished round is kept, and the arrangement stays valid.
+TEST(Grow, ACancelTakesEffectWithinARoundAndKeepsTheReport) {
+    const Exemplar ex = example("rods_3d");
+    GrowOptions o;
+    o.threads = 1;
+    Grower g(ex, o);
+    std::atomic<bool> stop{false};
+    std::atomic<int> rounds_seen{0};
+    int repeats = 0;  // events re-sent inside a round (the polls)
+    g.set_progress([&](const ProgressEvent& e) {
+        if (e.stage == "round" && e.iteration + 1 == rounds_seen) ++repeats;
+        if (e.stage == "round") rounds_seen = std::max(rounds_seen.load(), e.iteration + 1);
+        return !stop.load();
+    });
+    Box b = ex.domain.bounds();
+    for (int k = 0; k < 2; ++k) b.hi[k] = b.lo[k] + 12.0 * (b.hi[k] - b.lo[k]);  // ~20,000 rods
+    std::chrono::steady_clock::time_point asked;
+    std::thread timer([&] {
+        while (rounds_seen < 22) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        std::this_thread::sleep_for(std::chrono::milliseconds(40));  // inside the next round
+        asked = std::chrono::steady_clock::now();
+        stop = true;
+    });
+    EXPECT_THROW(g.grow(Domain::box(b.lo, b.hi, 3)), Cancelled);
+    const auto stopped = std::chrono::steady_clock::now();
+    timer.join();
+    const double latency = std::chrono::duration<double>(stopped - asked).count();
+    EXPECT_LT(latency, 0.15);
+    EXPECT_GT(repeats, 5) << "the cancel is polled inside rounds";
+    const GrowReport& r = g.last_report();
+    EXPECT_GE(r.rounds, 22);
+    EXPECT_FALSE(r.covered);
+    const Arrangement& a = g.arrangement();
+    std::set<std::uint64_t> ids;
+    for (const Element& e : a.elements) ids.insert(e.id);
+    EXPECT_EQ(ids.size(), a.elements.size()) << "element ids are unique after a cancel";
+    EXPECT_FALSE(g.horizon().empty());
+    for (const int h : g.horizon()) EXPECT_LT(h, static_cast<int>(a.elements.size()));
+    stop = false;
+    const size_t before = a.elements.size();
+    EXPECT_GT(g.grow(200).added, 0) << "growth goes on after a cancel";
+    EXPECT_GT(g.arrangement().elements.size(), before);
 }
 
 TEST(Grow, BadInputIsAClearError) {
