@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "option_flags.hpp"
 #include "status_printer.hpp"
 
 namespace tessera_cli {
@@ -15,16 +16,13 @@ namespace {
 struct EditArgs {
     std::string input, edit, output, input_domain, gltf_instancing = "gpu";
     bool quiet = false;
+    OptionFlags flags;  // EditOptions as flags, from the table (tessera/option_table.hpp)
     tessera::EditOptions options;
 };
 
 void run_edit(EditArgs& args) {
     StatusPrinter status("edit", args.quiet, std::cerr);
-    if (!(args.options.radius >= 0.0) || !std::isfinite(args.options.radius))
-        fail_option("--radius must be >= 0 (0 = automatic), got " + format_number(args.options.radius));
-    if (std::isnan(args.options.threshold)) fail_option("--threshold must be a number (negative = automatic)");
-    if (args.options.threads < 0)
-        fail_option("--threads must be >= 0 (0 = all hardware threads), got " + std::to_string(args.options.threads));
+    args.flags.apply(tessera::edit_option_table(), args.options);
     check_arrangement_output(args.output, "-o");
     tessera::SaveOptions save_options;
     save_options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
@@ -34,11 +32,12 @@ void run_edit(EditArgs& args) {
         status.step("checking the element meshes", [&] { tessera::build_scene(data); });
     const tessera::ElementEdit edit = tessera::parse_edit_json(tessera::read_file(args.edit), args.edit);
     tessera::EditReport report;
-    const tessera::Exemplar result = status.step("comparing the neighbourhoods of " + std::to_string(data.elements.size()) +
-                                                     " elements with the edited one's",
-                                                 [&] { return tessera::edit_elements(data, edit, args.options, &report); });
-    const std::string scene =
-        status.step("writing " + args.output, [&] { return write_arrangement(result, args.output, save_options); });
+    const tessera::Exemplar result =
+        status.step("comparing the neighbourhoods of " + std::to_string(data.elements.size()) +
+                        " elements with the edited one's",
+                    [&] { return tessera::edit_elements(data, edit, args.options, &report); });
+    const std::string scene = status.step(
+        "writing " + args.output, [&] { return write_arrangement(result, args.output, save_options); });
     if (!args.quiet && !scene.empty()) std::cerr << "scene: " << scene << std::endl;
     if (!args.quiet)
         std::cerr << "edit: changed " << report.changed.size() << " of " << data.elements.size()
@@ -53,7 +52,9 @@ Subcommand add_edit_command(CLI::App& app) {
         "edit",
         "Change one element as EDIT.json says (move it, change its type, radius, angle or attributes) and "
         "propagate the change to every element whose neighbourhood is similar (Eq. 1 within --threshold).");
-    cmd->add_option("INPUT", args->input, "The arrangement to edit (.json or .csv).")->required()->type_name("FILE");
+    cmd->add_option("INPUT", args->input, "The arrangement to edit (.json or .csv).")
+        ->required()
+        ->type_name("FILE");
     cmd->add_option("EDIT", args->edit, "The edit: a JSON file (docs/format.md, \"Edit files\").")
         ->required()
         ->type_name("FILE");
@@ -61,14 +62,7 @@ Subcommand add_edit_command(CLI::App& app) {
                       "The edited arrangement: .json, .csv, .ply (one point per element), .png, .svg, or a "
                       "scene .usda, .gltf, .glb, .obj or .mesh.ply.",
                       true);
-    cmd->add_option("--threshold", args->options.threshold,
-                    "Largest neighbourhood distance (Eq. 1, squared length units) of an element that receives "
-                    "the edit; negative = automatic (0.1 x spacing^2 per neighbour of the edited element).")
-        ->capture_default_str();
-    cmd->add_option("--radius", args->options.radius,
-                    "Neighbourhood radius; 0 = automatic (2 spacings in 2D, 1.5 in 3D).")
-        ->capture_default_str();
-    add_threads_option(*cmd, args->options.threads);
+    args->flags.add(*cmd, {method_options("edit", tessera::edit_option_table())});
     add_gltf_instancing_option(*cmd, args->gltf_instancing);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);

@@ -26,6 +26,7 @@ namespace tessera {
 struct DetOptions;
 struct PcfSynthOptions;
 struct GrowOptions;
+struct EditOptions;
 
 enum class OptionKind {
     flag,     // true / false (a CLI flag without a value)
@@ -73,6 +74,7 @@ using OptionTable = std::vector<OptionSpec<Options>>;
 const OptionTable<DetOptions>& det_option_table();
 const OptionTable<PcfSynthOptions>& pcf_option_table();
 const OptionTable<GrowOptions>& grow_option_table();
+const OptionTable<EditOptions>& edit_option_table();
 
 // The spellings of an option in each front end: --patch-size; patch_size (a Python keyword
 // such as lambda gets a trailing underscore: lambda_).

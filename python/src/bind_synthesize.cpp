@@ -13,6 +13,7 @@
 #include "option_table.hpp"
 #include "option_values.hpp"
 #include "tessera/det.hpp"
+#include "tessera/edit.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -92,6 +93,7 @@ void bind_synthesize(py::module_& m) {
             tables["det"] = describe_table(tessera::det_option_table());
             tables["pcf"] = describe_table(tessera::pcf_option_table());
             tables["grow"] = describe_table(tessera::grow_option_table());
+            tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)
             return tables;
         },
         "Every option of every method, from the library's tables (tessera/option_table.hpp): per method a "

@@ -1,8 +1,9 @@
 """The option tables (include/tessera/option_table.hpp) are the one declaration of every
 option: walk them and check that each option is a keyword of tessera.synthesize or
-tessera.Grower with the table's default, a flag of `tessera synth` / `tessera grow` whose
---help shows that default, a row of docs/cli.md, and that a value outside its check is
-refused with the option named as each front end spells it."""
+tessera.Grower with the table's default, a flag of `tessera synth` / `tessera grow` /
+`tessera edit` whose --help shows that default, a row of docs/cli.md, and that a value
+outside its check is refused with the option named as each front end spells it (editing
+has no Python call: its table is walked for the CLI and the docs)."""
 
 import inspect
 import math
@@ -15,11 +16,12 @@ import tessera
 from tessera import _tessera
 
 TABLES = _tessera.option_tables()
-COMMAND = {"det": "synth", "pcf": "synth", "grow": "grow"}
+COMMAND = {"det": "synth", "pcf": "synth", "grow": "grow", "edit": "edit"}
+PYTHON_METHODS = ("det", "pcf", "grow")
 
 
-def rows():
-    return [(method, row) for method in ("det", "pcf", "grow") for row in TABLES[method]]
+def rows(methods=tuple(COMMAND)):
+    return [(method, row) for method in methods for row in TABLES[method]]
 
 
 def row_id(item):
@@ -65,7 +67,7 @@ def _bounds(accepts):
     return lo, hi
 
 
-@pytest.mark.parametrize("item", rows(), ids=row_id)
+@pytest.mark.parametrize("item", rows(PYTHON_METHODS), ids=row_id)
 def test_every_option_is_a_keyword_with_the_tables_default(item):
     method, row = item
     parameters = signature_of(method)
@@ -104,7 +106,7 @@ def test_every_option_is_in_the_cli_docs(item, root):
     assert "| `%s" % row["flag"] in section, "%s has no row in docs/cli.md's tessera %s" % (row["flag"], COMMAND[method])
 
 
-@pytest.mark.parametrize("item", [i for i in rows() if bad_value(i[1]) is not None], ids=row_id)
+@pytest.mark.parametrize("item", [i for i in rows(PYTHON_METHODS) if bad_value(i[1]) is not None], ids=row_id)
 def test_a_value_outside_the_check_names_the_keyword(item, two_class):
     method, row = item
     value = bad_value(row)
@@ -123,8 +125,14 @@ def test_a_value_outside_the_check_names_the_flag(item, tmp_path, root):
     value = bad_value(row)
     if isinstance(value, float) and value == int(value):
         value = int(value)
+    inputs = [str(root / "examples" / "two_class_2d.json")]
     target = ["--region", "box:20,20"] if method == "grow" else ["--method", method]
-    result = subprocess.run([os.environ["TESSERA_CLI"], COMMAND[method], str(root / "examples" / "two_class_2d.json"),
+    if method == "edit":
+        edit = tmp_path / "edit.json"
+        edit.write_text('{"element": 0, "offset": [0.1, 0.0]}')
+        inputs.append(str(edit))
+        target = []
+    result = subprocess.run([os.environ["TESSERA_CLI"], COMMAND[method], *inputs,
                              "-o", str(tmp_path / "out.json"), *target, row["flag"], str(value)],
                             capture_output=True, text=True)
     assert result.returncode == 2, result.stderr

@@ -8,6 +8,7 @@
 #include "det/input_index.hpp"
 #include "det/matching.hpp"
 #include "tessera/error.hpp"
+#include "tessera/option_table.hpp"
 
 namespace tessera {
 
@@ -58,6 +59,7 @@ void apply(Exemplar& data, int e, const ElementEdit& edit) {
 Exemplar edit_elements(const Exemplar& data, const ElementEdit& edit, const EditOptions& options,
                        EditReport* report) {
     data.validate("the data to edit");
+    check_options(edit_option_table(), options);  // each field against its row, naming it
     check_edit(data, edit);
     const int edited = find_element(data, edit.element);
     if (data.elements[edited].locked)

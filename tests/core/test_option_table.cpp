@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "tessera/det.hpp"
+#include "tessera/edit.hpp"
 #include "tessera/error.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/option_table.hpp"
@@ -39,6 +40,7 @@ TEST(OptionTable, NamesAreUniqueSnakeCaseAndSpelledPerFrontEnd) {
     expect_unique_snake_case_names(det_option_table());
     expect_unique_snake_case_names(pcf_option_table());
     expect_unique_snake_case_names(grow_option_table());
+    expect_unique_snake_case_names(edit_option_table());
     const auto& det = det_option_table();
     EXPECT_EQ(cli_flag(*find_option(det, "patch_size")), "--patch-size");
     EXPECT_EQ(python_keyword(*find_option(det, "patch_size")), "patch_size");
@@ -128,6 +130,11 @@ TEST(OptionTable, LibraryEntryPointsNameTheBadField) {
     DetOptions d;
     d.patch_candidates = 0;
     EXPECT_EQ(message_of([&] { synthesize_det(ex, ex.domain, d); }), "patch_candidates must be an integer >= 1, got 0");
+    EditOptions e;
+    e.radius = -1.0;
+    ElementEdit edit;
+    edit.element = ex.elements[4].id;
+    EXPECT_EQ(message_of([&] { edit_elements(ex, edit, e); }), "radius must be a number >= 0, got -1");
 }
 
 }  // namespace
