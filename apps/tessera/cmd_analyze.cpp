@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "option_flags.hpp"
 #include "status_printer.hpp"
 #include "tessera/pcf_plot.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -19,17 +20,14 @@ namespace {
 struct AnalyzeArgs {
     std::string input, model, plot, csv, input_domain, compare;
     bool quiet = false, standard = false;
+    OptionFlags flags;  // PcfAnalysisSettings as flags, from the table (tessera/option_table.hpp)
     tessera::PcfAnalysisSettings settings;
     tessera::PcfOptions pcf;
-    // Options that belong to one mode only, to reject them in the other.
-    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *sigma_opt = nullptr, *step_opt = nullptr,
-                *extent_opt = nullptr, *csv_opt = nullptr, *bandwidth_opt = nullptr, *rmax_opt = nullptr,
-                *bins_opt = nullptr;
+    // Options that belong to one mode only, to reject them in the other (the analysis's own,
+    // from the table, by flags.given).
+    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *csv_opt = nullptr, *bandwidth_opt = nullptr,
+                *rmax_opt = nullptr, *bins_opt = nullptr;
 };
-
-void check_positive(double value, const std::string& flag) {
-    if (!(value > 0.0) || !std::isfinite(value)) fail_option(flag + " must be a number > 0, got " + format_number(value));
-}
 
 // A number as the shortest text that reads back exactly; "Inf" like R for g(0).
 std::string csv_number(double v) {
@@ -59,7 +57,8 @@ bool csv_has_class_column(const std::string& path) {
         std::string name = header.substr(start, end - start);
         std::string lower;
         for (char c : name)
-            if (c != ' ' && c != '\t' && c != '\r' && c != '"') lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            if (c != ' ' && c != '\t' && c != '\r' && c != '"')
+                lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (lower == "class") return true;
         start = end + 1;
     }
@@ -67,8 +66,12 @@ bool csv_has_class_column(const std::string& path) {
 }
 
 void run_standard(const AnalyzeArgs& args) {
-    for (const CLI::Option* o : {args.model_opt, args.plot_opt, args.sigma_opt, args.step_opt, args.extent_opt})
-        if (o->count() > 0) fail_option(o->get_name() + " cannot be used with --standard-pcf (which writes --csv)");
+    for (const CLI::Option* o : {args.model_opt, args.plot_opt})
+        if (o->count() > 0)
+            fail_option(o->get_name() + " cannot be used with --standard-pcf (which writes --csv)");
+    for (const auto& row : tessera::pcf_analysis_option_table())
+        if (args.flags.given(row.name))
+            fail_option(tessera::cli_flag(row) + " cannot be used with --standard-pcf (which writes --csv)");
     if (args.csv.empty()) fail_option("--standard-pcf needs --csv OUT.csv");
     if (!std::isfinite(args.pcf.bandwidth) || args.pcf.bandwidth < 0.0)
         fail_option("--bandwidth must be > 0, or 0 for automatic; got " + format_number(args.pcf.bandwidth));
@@ -81,9 +84,9 @@ void run_standard(const AnalyzeArgs& args) {
     StatusPrinter status("analyze", args.quiet, std::cerr);
     const tessera::Exemplar data =
         status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
-    const tessera::PcfResult g = status.step("measuring the pair correlation of " + std::to_string(data.elements.size()) +
-                                                 " elements",
-                                             [&] { return tessera::pair_correlation(data, args.pcf); });
+    const tessera::PcfResult g =
+        status.step("measuring the pair correlation of " + std::to_string(data.elements.size()) + " elements",
+                    [&] { return tessera::pair_correlation(data, args.pcf); });
     // Without a class column the single class has no name to report.
     const bool named = extension_of(args.input) != ".csv" || csv_has_class_column(args.input);
     std::string out = "r,class_a,class_b,g\n";
@@ -95,33 +98,32 @@ void run_standard(const AnalyzeArgs& args) {
     tessera::write_file_atomic(args.csv, out);
     if (!args.quiet)
         std::cerr << "analyze: pair correlation of " << g.curves.size() << " class pair(s), " << g.r.size()
-                  << " values of r up to " << format_number(g.r.back()) << ", bandwidth " << format_number(g.bandwidth)
-                  << "\nwrote " << args.csv << std::endl;
+                  << " values of r up to " << format_number(g.r.back()) << ", bandwidth "
+                  << format_number(g.bandwidth) << "\nwrote " << args.csv << std::endl;
 }
 
-void run_model(const AnalyzeArgs& args) {
+void run_model(AnalyzeArgs& args) {
     for (const CLI::Option* o : {args.csv_opt, args.bandwidth_opt, args.rmax_opt, args.bins_opt})
         if (o->count() > 0) fail_option(o->get_name() + " needs --standard-pcf");
-    check_positive(args.settings.sigma, "--sigma");
-    check_positive(args.settings.step, "--step");
-    check_positive(args.settings.extent, "--extent");
+    args.flags.apply(tessera::pcf_analysis_option_table(), args.settings);
     if (!args.model.empty()) check_output_path(args.model, "-o", {".json"});
     if (!args.plot.empty()) check_output_path(args.plot, "--plot", {".svg", ".png"});
 
     StatusPrinter status("analyze", args.quiet, std::cerr);
     const tessera::Exemplar exemplar =
         status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
-    const tessera::PcfModel model = status.step(
-        "analysing " + std::to_string(exemplar.elements.size()) + " elements",
-        [&] { return tessera::analyze_distribution(exemplar, args.settings); });
+    const tessera::PcfModel model =
+        status.step("analysing " + std::to_string(exemplar.elements.size()) + " elements",
+                    [&] { return tessera::analyze_distribution(exemplar, args.settings); });
     // Everything is made before anything is written: a failure leaves no file behind.
     const std::string json = tessera::pcf_model_to_json(model);
     std::string picture;
     tessera::PcfPlotOptions plot;
     if (!args.compare.empty()) {
         if (args.plot.empty()) fail_option("--compare needs --plot");
-        plot.measured = status.step("measuring " + args.compare,
-                                    [&] { return tessera::measure_distribution(model, load_input(args.compare, "")); });
+        plot.measured = status.step("measuring " + args.compare, [&] {
+            return tessera::measure_distribution(model, load_input(args.compare, ""));
+        });
     }
     if (!args.plot.empty())
         picture = extension_of(args.plot) == ".png" ? tessera::pcf_plot_png(model, plot)
@@ -131,9 +133,10 @@ void run_model(const AnalyzeArgs& args) {
         std::string classes;
         for (size_t c = 0; c < model.classes.size(); ++c)
             classes += (c ? ", " : "") + model.classes[c] + " " + std::to_string(model.counts[c]);
-        std::cerr << "analyze: " << model.classes.size() << " class(es) (" << classes << "), " << model.pcfs.size()
-                  << " PCF(s), " << (model.disks ? "disks" : "points") << ", r_max " << format_number(model.r_max)
-                  << ", x from 0 to " << format_number(model.x.back()) << std::endl;
+        std::cerr << "analyze: " << model.classes.size() << " class(es) (" << classes << "), "
+                  << model.pcfs.size() << " PCF(s), " << (model.disks ? "disks" : "points") << ", r_max "
+                  << format_number(model.r_max) << ", x from 0 to " << format_number(model.x.back())
+                  << std::endl;
     }
     if (!args.model.empty()) {
         tessera::write_file_atomic(args.model, json);
@@ -160,35 +163,35 @@ Subcommand add_analyze_command(CLI::App& app) {
     cmd->add_option("INPUT", args->input, "The exemplar (.json or .csv), 2D, one point per element.")
         ->required()
         ->type_name("FILE");
-    args->model_opt = add_output_option(*cmd, args->model, "Write the model to this .json file (default: stdout, "
-                                                           "unless --plot is given).", false);
-    args->plot_opt = cmd->add_option("--plot", args->plot,
-                                     "Draw every PCF (mean line over the shaded envelope) to this .svg or .png.")
-                         ->type_name("FILE");
+    args->model_opt = add_output_option(*cmd, args->model,
+                                        "Write the model to this .json file (default: stdout, "
+                                        "unless --plot is given).",
+                                        false);
+    args->plot_opt =
+        cmd->add_option("--plot", args->plot,
+                        "Draw every PCF (mean line over the shaded envelope) to this .svg or .png.")
+            ->type_name("FILE");
     cmd->add_option("--compare", args->compare,
                     "With --plot: also draw the mean PCFs of this arrangement (e.g. a `synth --method pcf` "
                     "output), measured on the model's axis, over the model's.")
         ->type_name("FILE");
-    args->sigma_opt = cmd->add_option("--sigma", args->settings.sigma,
-                                      "Width of the Gaussian kernel on the normalised axis (> 0).")
-                          ->capture_default_str();
-    args->step_opt = cmd->add_option("--step", args->settings.step, "Spacing of the PCF's x values (> 0).")
-                         ->capture_default_str();
-    args->extent_opt = cmd->add_option("--extent", args->settings.extent,
-                                       "Neighbourhood: x up to EXTENT for points, 3 + EXTENT for disks (> 0).")
-                           ->capture_default_str();
+    args->flags.add(*cmd, {method_options("analyze", tessera::pcf_analysis_option_table())});
     cmd->add_flag("--standard-pcf", args->standard,
                   "Write the standard estimate g(r) (spatstat's pcf: Gaussian kernel, translation edge "
                   "correction, physical units) of every class pair to --csv instead of a model.");
-    args->csv_opt = cmd->add_option("--csv", args->csv, "With --standard-pcf: the .csv to write (r,class_a,class_b,g).")
-                        ->type_name("FILE");
-    args->bandwidth_opt = cmd->add_option("--bandwidth", args->pcf.bandwidth,
-                                          "With --standard-pcf: standard deviation of the kernel; 0 = rmax / 40.")
-                              ->capture_default_str();
-    args->rmax_opt = cmd->add_option("--rmax", args->pcf.r_max,
-                                     "With --standard-pcf: largest r; 0 = 5 x the mean nearest-neighbour distance.")
-                         ->capture_default_str();
-    args->bins_opt = add_integer_option(*cmd, "--bins", args->pcf.bins, "With --standard-pcf: number of r values; 0 = 101.");
+    args->csv_opt =
+        cmd->add_option("--csv", args->csv, "With --standard-pcf: the .csv to write (r,class_a,class_b,g).")
+            ->type_name("FILE");
+    args->bandwidth_opt =
+        cmd->add_option("--bandwidth", args->pcf.bandwidth,
+                        "With --standard-pcf: standard deviation of the kernel; 0 = rmax / 40.")
+            ->capture_default_str();
+    args->rmax_opt =
+        cmd->add_option("--rmax", args->pcf.r_max,
+                        "With --standard-pcf: largest r; 0 = 5 x the mean nearest-neighbour distance.")
+            ->capture_default_str();
+    args->bins_opt = add_integer_option(*cmd, "--bins", args->pcf.bins,
+                                        "With --standard-pcf: number of r values; 0 = 101.");
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { args->standard ? run_standard(*args) : run_model(*args); }};

@@ -27,6 +27,7 @@ struct DetOptions;
 struct PcfSynthOptions;
 struct GrowOptions;
 struct EditOptions;
+struct PcfAnalysisSettings;
 
 enum class OptionKind {
     flag,     // true / false (a CLI flag without a value)
@@ -75,6 +76,9 @@ const OptionTable<DetOptions>& det_option_table();
 const OptionTable<PcfSynthOptions>& pcf_option_table();
 const OptionTable<GrowOptions>& grow_option_table();
 const OptionTable<EditOptions>& edit_option_table();
+// The PCF method's analysis (`tessera analyze`, analyze_distribution); pcf_option_table()
+// holds the same rows, read through PcfSynthOptions::analysis.
+const OptionTable<PcfAnalysisSettings>& pcf_analysis_option_table();
 
 // The spellings of an option in each front end: --patch-size; patch_size (a Python keyword
 // such as lambda gets a trailing underscore: lambda_).

@@ -94,6 +94,7 @@ void bind_synthesize(py::module_& m) {
             tables["pcf"] = describe_table(tessera::pcf_option_table());
             tables["grow"] = describe_table(tessera::grow_option_table());
             tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)
+            tables["analyze"] = describe_table(tessera::pcf_analysis_option_table());  // tessera.analyze
             return tables;
         },
         "Every option of every method, from the library's tables (tessera/option_table.hpp): per method a "

@@ -12,6 +12,7 @@
 #include "pcf/pcf_math.hpp"
 #include "pcf/sparse_classes.hpp"
 #include "tessera/error.hpp"
+#include "tessera/option_table.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace tessera {
@@ -30,13 +31,7 @@ std::string number(double v) {
 }  // namespace
 
 void check_analysis_settings(const PcfAnalysisSettings& s) {
-    const auto positive = [](double v, const char* name) {
-        if (!(v > 0.0) || !std::isfinite(v))
-            throw Error(ErrorKind::option, std::string("pcf ") + name + " must be a finite number > 0, got " + number(v));
-    };
-    positive(s.sigma, "sigma");
-    positive(s.step, "step");
-    positive(s.extent, "extent");
+    check_options(pcf_analysis_option_table(), s);  // each field against its row, naming it
     if ((3.0 + s.extent) / s.step > max_bins)
         throw Error(ErrorKind::option, "pcf extent / step gives more than " + std::to_string(max_bins) +
                                            " values on the axis (extent " + number(s.extent) + ", step " +
@@ -47,7 +42,8 @@ namespace {
 
 // The PCFs of a DAG: for each class in topological order, its own PCF, then one per
 // parent in the order of parents[c]. Synthesis then finds a class's active PCFs together.
-std::vector<PcfEnvelope> pcf_pairs(const std::vector<std::vector<int>>& parents, const std::vector<int>& order) {
+std::vector<PcfEnvelope> pcf_pairs(const std::vector<std::vector<int>>& parents,
+                                   const std::vector<int>& order) {
     std::vector<PcfEnvelope> pairs;
     for (int c : order) {
         PcfEnvelope within;
@@ -95,7 +91,8 @@ PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSetting
     model.order = pcf::topological_order(model.parents, model.classes);
 
     model.area = exemplar.domain.measure();
-    if (!(model.area > 0.0)) throw Error(ErrorKind::domain, "PCF analysis: the exemplar's domain has no area");
+    if (!(model.area > 0.0))
+        throw Error(ErrorKind::domain, "PCF analysis: the exemplar's domain has no area");
     model.r_max = pcf_r_max(model.area, static_cast<int>(points.p.size()));
     const pcf::Axis axis = pcf::make_axis(settings, model.disks);
     model.x.resize(axis.bins);
@@ -112,8 +109,8 @@ PcfModel analyze_distribution(const Exemplar& exemplar, const PcfAnalysisSetting
             };
             if (!depends(a, b) && !depends(b, a)) unrelated.push_back({a, b});
         }
-    const std::vector<double> closest = pcf::closest_approaches(points, exemplar.domain, model.r_max, unrelated, classes,
-                                                                pcf::separation_cap(settings, model.disks));
+    const std::vector<double> closest = pcf::closest_approaches(
+        points, exemplar.domain, model.r_max, unrelated, classes, pcf::separation_cap(settings, model.disks));
     for (size_t q = 0; q < unrelated.size(); ++q)
         model.separations.push_back({unrelated[q].first, unrelated[q].second, closest[q]});
     model.sparse = pcf::analyse_sparse_classes(points, model);
