@@ -56,6 +56,8 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
             hard_cores.push_back(compute_hard_core(a, b));
             sample_cores.push_back(bounds.has_samples ? bounds.samples.hard_core(a, b) : 0.0);
             reach = std::max(reach, hard_cores.back());
+            repair_bounds.push_back(bounds.centroids.tail_distance(a, b, core::CrowdingRepairOptions{}.tail));
+            repair_reach = std::max(repair_reach, repair_bounds.back());
         }
     for (int i = 0; i < input.size(); ++i) {
         const Element& e = exemplar.elements[i];

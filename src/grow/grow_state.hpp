@@ -120,6 +120,12 @@ struct Grower::Impl {
     double sample_core(int a, int b) const { return sample_cores[a * exemplar.types.size() + b]; }
     // Both per type pair (row a, column b), computed once: they are asked in the inner loops.
     std::vector<double> hard_cores, sample_cores;
+    // The centroid distance under which crowding repair moves a pair of types a and b (the
+    // tail of the exemplar's nearest distances, core::CrowdingRepairOptions::tail), per type
+    // pair, and the largest of them: the repair's skip test asks them for every part.
+    std::vector<double> repair_bounds;
+    double repair_reach = 0.0;
+    double repair_bound(int a, int b) const { return repair_bounds[a * exemplar.types.size() + b]; }
     double compute_hard_core(int a, int b) const;
     // Appends an element (grid included); returns its index.
     int add(const grow::OutElement& e);

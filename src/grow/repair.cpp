@@ -69,21 +69,13 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
 // it checks lies below that one): the part is skipped, which saves building it. Centroid
 // bounds only, so for exemplars of single-sample elements.
 bool may_crowd(const Grower::Impl& g, const std::vector<int>& movable) {
-    const core::CrowdingRepairOptions defaults;
-    const core::NearestDistanceTails& tails = g.bounds.centroids;
-    const int types = tails.types();
-    double reach = 0.0;
-    std::vector<double> bound(static_cast<size_t>(types) * types);
-    for (int a = 0; a < types; ++a)
-        for (int b = 0; b < types; ++b)
-            reach = std::max(reach, bound[a * types + b] = tails.tail_distance(a, b, defaults.tail));
     bool close = false;
     for (const int v : movable) {
         const OutElement& e = g.out[v];
         g.grid.for_each_within(
-            e.p, reach, [&](int i) { return g.out[i].p; },
+            e.p, g.repair_reach, [&](int i) { return g.out[i].p; },
             [&](int i) {
-                if (i != v && norm(g.out[i].p - e.p) < bound[e.type * types + g.out[i].type]) close = true;
+                if (i != v && norm(g.out[i].p - e.p) < g.repair_bound(e.type, g.out[i].type)) close = true;
             });
         if (close) return true;
     }
