@@ -37,6 +37,10 @@ std::string StatusPrinter::format(const tessera::ProgressEvent& event, const std
                       event.energy, static_cast<int>(100.0 * event.fraction), event.elapsed_s);
         return line;
     }
+    if (event.stage == "round") {  // growth's first event, before any round has run
+        std::snprintf(line, sizeof line, "growing  elapsed %.2f s", event.elapsed_s);
+        return line;
+    }
     // Any other stage: its fraction done when the event has one (a 0-based step index).
     const std::string stage = event.stage.empty() ? "working" : event.stage;
     if (event.iterations > 0 && event.iteration >= 0) {

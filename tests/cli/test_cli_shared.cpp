@@ -91,6 +91,7 @@ TEST(StatusPrinter, FormatsEveryStage) {
     EXPECT_EQ(StatusPrinter::format(event("analysis", 9, 8), "iteration"), "analysis 8/8 (100%)  elapsed 0.50 s");
     EXPECT_EQ(StatusPrinter::format(event("init", -1, 10), "iteration"), "init  elapsed 0.50 s");
     EXPECT_EQ(StatusPrinter::format(event("", -1, 0), "iteration"), "working  elapsed 0.50 s");
+    EXPECT_EQ(StatusPrinter::format(event("round", -1, 100), "iteration"), "growing  elapsed 0.50 s");
     EXPECT_EQ(StatusPrinter::format(event("done", 10, 10), "iteration"), "");
 }
 
