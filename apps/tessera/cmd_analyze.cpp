@@ -11,6 +11,7 @@
 #include "common.hpp"
 #include "option_flags.hpp"
 #include "status_printer.hpp"
+#include "tessera/metrics.hpp"
 #include "tessera/pcf_plot.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -22,11 +23,11 @@ struct AnalyzeArgs {
     bool quiet = false, standard = false;
     OptionFlags flags;  // PcfAnalysisSettings as flags, from the table (tessera/option_table.hpp)
     tessera::PcfAnalysisSettings settings;
+    OptionFlags estimate;  // PcfOptions as flags (--standard-pcf's), from pair_correlation_option_table
     tessera::PcfOptions pcf;
-    // Options that belong to one mode only, to reject them in the other (the analysis's own,
-    // from the table, by flags.given).
-    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *csv_opt = nullptr, *bandwidth_opt = nullptr,
-                *rmax_opt = nullptr, *bins_opt = nullptr;
+    // Options that belong to one mode only, to reject them in the other (the two tables'
+    // own by flags.given and estimate.given).
+    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *csv_opt = nullptr;
 };
 
 // A number as the shortest text that reads back exactly; "Inf" like R for g(0).
@@ -65,20 +66,15 @@ bool csv_has_class_column(const std::string& path) {
     return false;
 }
 
-void run_standard(const AnalyzeArgs& args) {
+void run_standard(AnalyzeArgs& args) {
     for (const CLI::Option* o : {args.model_opt, args.plot_opt})
         if (o->count() > 0)
             fail_option(o->get_name() + " cannot be used with --standard-pcf (which writes --csv)");
     for (const auto& row : tessera::pcf_analysis_option_table())
         if (args.flags.given(row.name))
             fail_option(tessera::cli_flag(row) + " cannot be used with --standard-pcf (which writes --csv)");
+    args.estimate.apply(tessera::pair_correlation_option_table(), args.pcf);
     if (args.csv.empty()) fail_option("--standard-pcf needs --csv OUT.csv");
-    if (!std::isfinite(args.pcf.bandwidth) || args.pcf.bandwidth < 0.0)
-        fail_option("--bandwidth must be > 0, or 0 for automatic; got " + format_number(args.pcf.bandwidth));
-    if (!std::isfinite(args.pcf.r_max) || args.pcf.r_max < 0.0)
-        fail_option("--rmax must be > 0, or 0 for automatic; got " + format_number(args.pcf.r_max));
-    if (args.pcf.bins != 0 && args.pcf.bins < 2)
-        fail_option("--bins must be >= 2, or 0 for automatic; got " + std::to_string(args.pcf.bins));
     check_output_path(args.csv, "--csv", {".csv"});
 
     StatusPrinter status("analyze", args.quiet, std::cerr);
@@ -103,8 +99,9 @@ void run_standard(const AnalyzeArgs& args) {
 }
 
 void run_model(AnalyzeArgs& args) {
-    for (const CLI::Option* o : {args.csv_opt, args.bandwidth_opt, args.rmax_opt, args.bins_opt})
-        if (o->count() > 0) fail_option(o->get_name() + " needs --standard-pcf");
+    if (args.csv_opt->count() > 0) fail_option("--csv needs --standard-pcf");
+    for (const auto& row : tessera::pair_correlation_option_table())
+        if (args.estimate.given(row.name)) fail_option(tessera::cli_flag(row) + " needs --standard-pcf");
     args.flags.apply(tessera::pcf_analysis_option_table(), args.settings);
     if (!args.model.empty()) check_output_path(args.model, "-o", {".json"});
     if (!args.plot.empty()) check_output_path(args.plot, "--plot", {".svg", ".png"});
@@ -178,20 +175,13 @@ Subcommand add_analyze_command(CLI::App& app) {
     args->flags.add(*cmd, {method_options("analyze", tessera::pcf_analysis_option_table())});
     cmd->add_flag("--standard-pcf", args->standard,
                   "Write the standard estimate g(r) (spatstat's pcf: Gaussian kernel, translation edge "
-                  "correction, physical units) of every class pair to --csv instead of a model.");
+                  "correction, physical units) of every class pair to --csv instead of a model, on the r grid "
+                  "of --r-max, --bandwidth and --bins.");
     args->csv_opt =
         cmd->add_option("--csv", args->csv, "With --standard-pcf: the .csv to write (r,class_a,class_b,g).")
             ->type_name("FILE");
-    args->bandwidth_opt =
-        cmd->add_option("--bandwidth", args->pcf.bandwidth,
-                        "With --standard-pcf: standard deviation of the kernel; 0 = rmax / 40.")
-            ->capture_default_str();
-    args->rmax_opt =
-        cmd->add_option("--rmax", args->pcf.r_max,
-                        "With --standard-pcf: largest r; 0 = 5 x the mean nearest-neighbour distance.")
-            ->capture_default_str();
-    args->bins_opt = add_integer_option(*cmd, "--bins", args->pcf.bins,
-                                        "With --standard-pcf: number of r values; 0 = 101.");
+    // With --standard-pcf: --r-max, --bandwidth, --bins.
+    args->estimate.add(*cmd, {method_options("standard-pcf", tessera::pair_correlation_option_table())});
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);
     return {cmd, [args] { args->standard ? run_standard(*args) : run_model(*args); }};

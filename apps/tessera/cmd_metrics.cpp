@@ -7,7 +7,9 @@
 #include <memory>
 
 #include "common.hpp"
+#include "option_flags.hpp"
 #include "status_printer.hpp"
+#include "tessera/metrics.hpp"
 
 namespace tessera_cli {
 namespace {
@@ -15,21 +17,13 @@ namespace {
 struct MetricsArgs {
     std::string exemplar, output, report, input_domain, output_domain;
     bool quiet = false;
+    OptionFlags estimate;  // PcfOptions as flags, from pair_correlation_option_table
     tessera::PcfOptions pcf;
 };
 
-void check_options(const MetricsArgs& args) {
-    if (!std::isfinite(args.pcf.r_max) || args.pcf.r_max < 0.0)
-        fail_option("--rmax must be > 0, or 0 for automatic; got " + format_number(args.pcf.r_max));
-    if (!std::isfinite(args.pcf.bandwidth) || args.pcf.bandwidth < 0.0)
-        fail_option("--bandwidth must be > 0, or 0 for automatic; got " + format_number(args.pcf.bandwidth));
-    if (args.pcf.bins != 0 && args.pcf.bins < 2)
-        fail_option("--bins must be >= 2, or 0 for automatic; got " + std::to_string(args.pcf.bins));
-}
-
-void run_metrics(const MetricsArgs& args) {
+void run_metrics(MetricsArgs& args) {
+    args.estimate.apply(tessera::pair_correlation_option_table(), args.pcf);
     StatusPrinter status("metrics", args.quiet, std::cerr);
-    check_options(args);
     if (!args.report.empty()) check_output_path(args.report, "-o", {".json"});
     const tessera::Exemplar exemplar = status.step(
         "reading " + args.exemplar, [&] { return load_input(args.exemplar, args.input_domain, "--input-domain"); });
@@ -62,16 +56,7 @@ Subcommand add_metrics_command(CLI::App& app) {
         ->required()
         ->type_name("FILE");
     add_output_option(*cmd, args->report, "Write the report to this .json file instead of stdout.", false);
-    cmd->add_option(
-           "--rmax", args->pcf.r_max,
-           "Largest r of the pair correlation; 0 = automatic (5 x the exemplar's mean nearest-neighbour "
-           "distance).")
-        ->capture_default_str();
-    cmd->add_option(
-           "--bandwidth", args->pcf.bandwidth,
-           "Standard deviation of the Gaussian kernel of the pair correlation; 0 = automatic (rmax / 40).")
-        ->capture_default_str();
-    add_integer_option(*cmd, "--bins", args->pcf.bins, "Number of r values from 0 to rmax; 0 = automatic (101).");
+    args->estimate.add(*cmd, {method_options("metrics", tessera::pair_correlation_option_table())});
     add_input_domain_option(*cmd, args->input_domain, "EXEMPLAR");
     cmd->add_option("--output-domain", args->output_domain,
                     "Like --input-domain, for OUTPUT (useful when OUTPUT is a .csv, which stores no domain).")

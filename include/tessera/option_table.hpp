@@ -11,7 +11,9 @@
 //
 // Adding an option: a field in the options struct, a row in its method's table
 // (src/det/det_option_table.cpp, src/pcf/pcf_option_table.cpp,
-// src/grow/grow_option_table.cpp), the code that uses it, and a line in docs/cli.md.
+// src/grow/grow_option_table.cpp, src/det/edit_option_table.cpp,
+// src/pcf/pcf_analysis_option_table.cpp, src/metrics/pair_correlation_option_table.cpp),
+// the code that uses it, and a line in docs/cli.md.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +30,7 @@ struct PcfSynthOptions;
 struct GrowOptions;
 struct EditOptions;
 struct PcfAnalysisSettings;
+struct PcfOptions;
 
 enum class OptionKind {
     flag,     // true / false (a CLI flag without a value)
@@ -57,6 +60,9 @@ struct OptionInfo {
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
     bool lo_open = false, hi_open = false;
+    // integer and number: 0 is accepted besides the range, and means "automatic" (bins: 0 or
+    // from 2 on).
+    bool zero_is_automatic = false;
     std::vector<std::string> choices;  // choice: the accepted words
     bool needs_dimension = false;      // text parsed against the exemplar's dimension (a field)
 };
@@ -79,6 +85,9 @@ const OptionTable<EditOptions>& edit_option_table();
 // The PCF method's analysis (`tessera analyze`, analyze_distribution); pcf_option_table()
 // holds the same rows, read through PcfSynthOptions::analysis.
 const OptionTable<PcfAnalysisSettings>& pcf_analysis_option_table();
+// The standard pair correlation estimate (pair_correlation, metrics: `tessera analyze
+// --standard-pcf`, `tessera metrics`, Python's pair_correlation and metrics).
+const OptionTable<PcfOptions>& pair_correlation_option_table();
 
 // The spellings of an option in each front end: --patch-size; patch_size (a Python keyword
 // such as lambda gets a trailing underscore: lambda_).

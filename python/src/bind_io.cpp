@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "option_table.hpp"
 #include "tessera/io.hpp"
 #include "tessera/metrics.hpp"
 #include "tessera/option_text.hpp"
@@ -16,11 +17,10 @@ namespace py = pybind11;
 namespace tessera_python {
 namespace {
 
-tessera::PcfOptions pcf_options(double r_max, double bandwidth, int bins) {
+// The estimate's keywords (r_max=, bandwidth=, bins=), checked by its option table.
+tessera::PcfOptions pcf_options(const py::dict& given, const std::string& owner) {
     tessera::PcfOptions o;
-    o.r_max = r_max;
-    o.bandwidth = bandwidth;
-    o.bins = bins;
+    apply_keywords(tessera::pair_correlation_option_table(), o, given, 0, owner);
     return o;
 }
 
@@ -61,25 +61,26 @@ void bind_io(py::module_& m) {
         py::arg("data"), py::arg("path"), py::arg("width"), py::arg("meshes"), py::arg("legend"));
     m.def(
         "metrics_report",
-        [](const tessera::Exemplar& exemplar, const tessera::Exemplar& output, double r_max, double bandwidth,
-           int bins) {
+        [](const tessera::Exemplar& exemplar, const tessera::Exemplar& output, const py::dict& options) {
+            const tessera::PcfOptions o = pcf_options(options, "metrics");
             py::gil_scoped_release release;
-            return tessera::metrics_report_json(exemplar, output, pcf_options(r_max, bandwidth, bins));
+            return tessera::metrics_report_json(exemplar, output, o);
         },
-        py::arg("exemplar"), py::arg("output"), py::arg("r_max"), py::arg("bandwidth"), py::arg("bins"));
+        py::arg("exemplar"), py::arg("output"), py::arg("options"));
     m.def(
         "pair_correlation",
-        [](const tessera::Exemplar& data, double r_max, double bandwidth, int bins) {
+        [](const tessera::Exemplar& data, const py::dict& options) {
+            const tessera::PcfOptions o = pcf_options(options, "pair_correlation");
             tessera::PcfResult result;
             {
                 py::gil_scoped_release release;
-                result = tessera::pair_correlation(data, pcf_options(r_max, bandwidth, bins));
+                result = tessera::pair_correlation(data, o);
             }
             py::dict curves;
             for (const auto& c : result.curves) curves[py::make_tuple(c.name_a, c.name_b)] = to_array(c.g);
             return py::make_tuple(to_array(result.r), curves, result.bandwidth);
         },
-        py::arg("data"), py::arg("r_max"), py::arg("bandwidth"), py::arg("bins"));
+        py::arg("data"), py::arg("options"));
 }
 
 }  // namespace tessera_python

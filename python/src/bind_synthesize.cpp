@@ -16,6 +16,7 @@
 #include "tessera/edit.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/grow.hpp"
+#include "tessera/metrics.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace py = pybind11;
@@ -95,11 +96,13 @@ void bind_synthesize(py::module_& m) {
             tables["grow"] = describe_table(tessera::grow_option_table());
             tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)
             tables["analyze"] = describe_table(tessera::pcf_analysis_option_table());  // tessera.analyze
+            // tessera.pair_correlation and tessera.metrics (`analyze --standard-pcf`, `metrics`)
+            tables["pair_correlation"] = describe_table(tessera::pair_correlation_option_table());
             return tables;
         },
         "Every option of every method, from the library's tables (tessera/option_table.hpp): per method a "
         "list of dicts (name, keyword, flag, kind, default, doc, choices, accepts). tessera.synthesize and "
-        "tessera.Grower take their keywords from them.");
+        "tessera.Grower, tessera.pair_correlation and tessera.metrics take their keywords from them.");
 }
 
 }  // namespace tessera_python

@@ -288,19 +288,26 @@ def compare_model(model, exemplar, output):
     return _tessera.compare(model, exemplar, output)
 
 
-def metrics(exemplar, output, *, r_max=0.0, bandwidth=0.0, bins=0):
+def metrics(exemplar, output, **options):
     """Compare an output with its exemplar (`tessera metrics`): pair correlation per class
     pair in physical units and its relative error, nearest-neighbour distances, |psi6| in 2D.
-    r_max 0 = 5x the mean nearest-neighbour distance; bandwidth 0 = r_max / 40; bins 0 = 101.
-    Returns the report as a dict."""
-    return _json.loads(_tessera.metrics_report(_as_data(exemplar), _as_data(output), r_max, bandwidth, bins))
+    Returns the report as a dict. The estimate's options are those of pair_correlation."""
+    _options.check_keywords("metrics", options, ("pair_correlation",))
+    return _json.loads(_tessera.metrics_report(_as_data(exemplar), _as_data(output), options))
 
 
-def pair_correlation(data, *, r_max=0.0, bandwidth=0.0, bins=0):
+_options.with_signature(metrics, ("exemplar", "output"), ("pair_correlation",))
+
+
+def pair_correlation(data, **options):
     """The standard pair correlation g(r) of an arrangement (spatstat's convention: Gaussian
     kernel, translation edge correction). Returns (r, curves, bandwidth) where curves maps
     (class_a, class_b) name pairs to arrays of g over r."""
-    return _tessera.pair_correlation(_as_data(data), r_max, bandwidth, bins)
+    _options.check_keywords("pair_correlation", options, ("pair_correlation",))
+    return _tessera.pair_correlation(_as_data(data), options)
+
+
+_options.with_signature(pair_correlation, ("data",), ("pair_correlation",))
 
 
 def _as_data(data):

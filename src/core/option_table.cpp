@@ -30,7 +30,10 @@ std::string range_text(const OptionInfo& info) {
     return text;
 }
 
+std::string automatic_text(const OptionInfo& info) { return info.zero_is_automatic ? ", or 0 (automatic)" : ""; }
+
 bool in_range(const OptionInfo& info, double v) {
+    if (info.zero_is_automatic && v == 0.0) return true;
     if (info.lo_open ? !(v > info.lo) : !(v >= info.lo)) return false;
     return info.hi_open ? v < info.hi : v <= info.hi;
 }
@@ -58,8 +61,9 @@ std::string describe_accepted(const OptionInfo& info) {
     switch (info.kind) {
         case OptionKind::flag: return "true or false";
         case OptionKind::seed: return "an unsigned 64-bit integer";
-        case OptionKind::integer: return "an integer" + range_text(info);
-        case OptionKind::number: return (range_text(info).empty() ? "a finite number" : "a number") + range_text(info);
+        case OptionKind::integer: return "an integer" + range_text(info) + automatic_text(info);
+        case OptionKind::number:
+            return (range_text(info).empty() ? "a finite number" : "a number") + range_text(info) + automatic_text(info);
         case OptionKind::choice: {
             std::string text;
             for (size_t i = 0; i < info.choices.size(); ++i)

@@ -23,12 +23,12 @@
 #include "metrics/points.hpp"
 #include "tessera/error.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/option_table.hpp"
 
 namespace tessera {
 namespace {
 
 constexpr int default_bins = 101;
-constexpr int max_bins = 1'000'000;
 constexpr double kernel_reach = 5.0;  // kernel truncated at 5 standard deviations (relative mass < 6e-7)
 
 struct ResolvedOptions {
@@ -37,25 +37,10 @@ struct ResolvedOptions {
     int threads = 0;
 };
 
-std::string number(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-
 // PcfOptions defaults (metrics.hpp): r_max 5 x mean nearest-neighbour distance,
 // bandwidth r_max / 40, 101 bins.
 ResolvedOptions resolve_options(const Exemplar& points, const PcfOptions& options) {
-    if (!std::isfinite(options.r_max) || options.r_max < 0.0)
-        throw Error(ErrorKind::option, "pcf r_max must be a finite number >= 0 (0 = automatic), got " +
-                                           number(options.r_max));
-    if (!std::isfinite(options.bandwidth) || options.bandwidth < 0.0)
-        throw Error(ErrorKind::option, "pcf bandwidth must be a finite number >= 0 (0 = automatic), got " +
-                                           number(options.bandwidth));
-    if (options.bins < 0 || options.bins == 1 || options.bins > max_bins)
-        throw Error(ErrorKind::option, "pcf bins must be between 2 and " + std::to_string(max_bins) +
-                                           " (0 = " + std::to_string(default_bins) + "), got " +
-                                           std::to_string(options.bins));
+    check_options(pair_correlation_option_table(), options);  // names the field: "bins must be ..."
     ResolvedOptions r;
     r.bins = options.bins == 0 ? default_bins : options.bins;
     r.threads = options.threads;

@@ -9,6 +9,7 @@
 #include "tessera/edit.hpp"
 #include "tessera/error.hpp"
 #include "tessera/grow.hpp"
+#include "tessera/metrics.hpp"
 #include "tessera/option_table.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -41,6 +42,9 @@ TEST(OptionTable, NamesAreUniqueSnakeCaseAndSpelledPerFrontEnd) {
     expect_unique_snake_case_names(pcf_option_table());
     expect_unique_snake_case_names(grow_option_table());
     expect_unique_snake_case_names(edit_option_table());
+    expect_unique_snake_case_names(pcf_analysis_option_table());
+    expect_unique_snake_case_names(pair_correlation_option_table());
+    EXPECT_EQ(cli_flag(*find_option(pair_correlation_option_table(), "r_max")), "--r-max");
     const auto& det = det_option_table();
     EXPECT_EQ(cli_flag(*find_option(det, "patch_size")), "--patch-size");
     EXPECT_EQ(python_keyword(*find_option(det, "patch_size")), "patch_size");
@@ -135,6 +139,12 @@ TEST(OptionTable, LibraryEntryPointsNameTheBadField) {
     ElementEdit edit;
     edit.element = ex.elements[4].id;
     EXPECT_EQ(message_of([&] { edit_elements(ex, edit, e); }), "radius must be a number >= 0, got -1");
+    PcfOptions p;
+    p.bins = 1;  // 0 (automatic) or at least 2
+    EXPECT_EQ(message_of([&] { pair_correlation(ex, p); }),
+              "bins must be an integer from 2 to 1000000, or 0 (automatic), got 1");
+    p.bins = 0;
+    EXPECT_EQ(pair_correlation(ex, p).r.size(), 101u);
 }
 
 }  // namespace

@@ -117,7 +117,7 @@ TEST_F(PcfAnalyzeCli, StandardPcfAgreesWithSpatstat) {
                     window += (window.empty() ? "" : ",") + windows.rows[row][windows.column(c)];
         ASSERT_FALSE(window.empty());
         char args[256];
-        std::snprintf(args, sizeof args, " --input-domain %s --standard-pcf --bandwidth %.17g --rmax %.17g --csv ",
+        std::snprintf(args, sizeof args, " --input-domain %s --standard-pcf --bandwidth %.17g --r-max %.17g --csv ",
                       window.c_str(), params.bandwidth, params.r_max);
         const CliRun r = analyze("'" + points_dir + name + ".csv'" + args + q(name + ".csv") + " -q");
         ASSERT_EQ(r.code, 0) << r.err;
@@ -162,7 +162,7 @@ TEST_F(PcfAnalyzeCli, StandardPcfAgreesWithSpatstat) {
 
 TEST_F(PcfAnalyzeCli, StandardPcfDefaultsToTheBoundingBoxAndNamesClasses) {
     write("pts.csv", "x,y,class\n0,0,a\n1,0,b\n0,1,a\n1,1,b\n0.5,0.5,a\n0.2,0.7,b\n");
-    const CliRun r = analyze(q("pts.csv") + " --standard-pcf --rmax 0.5 --bandwidth 0.05 --bins 11 --csv " + q("g.csv"));
+    const CliRun r = analyze(q("pts.csv") + " --standard-pcf --r-max 0.5 --bandwidth 0.05 --bins 11 --csv " + q("g.csv"));
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("wrote"), std::string::npos);
     const tessera::test::CsvTable g = tessera::test::read_csv(path("g.csv"));
@@ -179,7 +179,7 @@ TEST_F(PcfAnalyzeCli, HelpListsTheOptions) {
     const CliRun r = analyze("--help");
     EXPECT_EQ(r.code, 0);
     for (const char* flag : {"--plot", "--sigma", "--step", "--extent", "--input-domain", "--standard-pcf",
-                             "--bandwidth", "--rmax", "--bins", "--csv", "--quiet"})
+                             "--bandwidth", "--r-max", "--bins", "--csv", "--quiet"})
         EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
 }
 
@@ -204,7 +204,7 @@ TEST_F(PcfAnalyzeCli, ErrorsAreOneLineAndWriteNothing) {
     } cases[] = {
         {"'" + points_dir + "cells.csv' --standard-pcf --bandwidth -1 --csv " + q("g.csv"), 2, {"--bandwidth", "-1"}},
         {"'" + points_dir + "cells.csv' --standard-pcf --bandwidth nan --csv " + q("g.csv"), 2, {"--bandwidth"}},
-        {"'" + points_dir + "cells.csv' --standard-pcf --rmax -2 --csv " + q("g.csv"), 2, {"--rmax"}},
+        {"'" + points_dir + "cells.csv' --standard-pcf --r-max -2 --csv " + q("g.csv"), 2, {"--r-max"}},
         {"'" + points_dir + "cells.csv' --standard-pcf --bins 1 --csv " + q("g.csv"), 2, {"--bins"}},
         {"'" + points_dir + "cells.csv' --standard-pcf", 2, {"--csv"}},
         {"'" + points_dir + "cells.csv' --standard-pcf --csv " + q("g.txt"), 2, {"--csv", ".txt"}},
