@@ -1,8 +1,10 @@
 // tessera/option_table.hpp — every option of every method, declared once.
 //
 // Each method's options (DetOptions for `synth --method det`, PcfSynthOptions for
-// `--method pcf`, GrowOptions for `grow`) are listed in one table: the option's name, its
-// kind, its one-line doc, its check, and how to read and write it in the options struct.
+// `--method pcf`, GrowOptions for `grow`, EditOptions for `edit`, PcfAnalysisSettings for
+// `analyze`, PcfOptions for the pair correlation estimate) are listed in one table: the
+// option's name, its kind, its one-line doc, its check, and how to read and write it in the
+// options struct.
 // Every front end is built from or checked against these tables: the CLI makes its flags
 // from them (--patch-size, with the doc as help and the default shown), the Python module
 // its keywords (patch_size=, with the same default), and requests of a JSON API would be

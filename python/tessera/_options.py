@@ -1,5 +1,6 @@
-"""The keyword options of tessera.synthesize and tessera.Grower, made from the library's
-option tables (``_tessera.option_tables()``, include/tessera/option_table.hpp): one table
+"""The keyword options of tessera.synthesize, tessera.Grower, tessera.pair_correlation and
+tessera.metrics, made from the library's option tables (``_tessera.option_tables()``,
+include/tessera/option_table.hpp): one table
 per method declares each option once (name, kind, default, doc, check), and the CLI's
 flags, these keywords, their defaults, their docs and their checks all come from it.
 """
