@@ -34,6 +34,23 @@ void mark_assigned(const Grower::Impl& g, int e, int patch, int m_out, Scratch& 
     }
 }
 
+// Whether a candidate of type t at p, proposed by horizon element h, lies in h's Voronoi cell
+// among the existing elements of the types it is owned against (Impl::owned): no such
+// element other than h is nearer. A horizon element's patch then fills only the room
+// nearer to it than to anything already there; where the pattern's hard core is far under
+// its spacing, the unpaired input neighbours of a match otherwise become candidates between
+// elements already placed, round after round (a soft pattern grew at several times its
+// density).
+bool in_proposer_cell(const Grower::Impl& g, int h, int t, const Vec3& p) {
+    Vec3 d = p - g.out[h].p;
+    if (g.metric.dimension == 2) d.z = 0.0;
+    bool foreign = false;
+    g.grid.for_each_within(
+        p, norm(d), [&](int i) { return g.out[i].p; },
+        [&](int i) { foreign = foreign || (i != h && g.owned_by_proposer(t, g.out[i].type)); });
+    return !foreign;
+}
+
 }  // namespace
 
 std::vector<Candidate> propose(Grower::Impl& g, double extent) {
@@ -68,6 +85,7 @@ std::vector<Candidate> propose(Grower::Impl& g, double extent) {
                     Candidate c;
                     c.p = he.p + frame.rotate(nb[i].offset);
                     if (g.metric.dimension == 2) c.p.z = 0.0;
+                    if (g.any_owned && !in_proposer_cell(g, h, nb[i].type, c.p)) continue;
                     c.type = nb[i].type;
                     c.source = nb[i].element;
                     c.frame = frame;

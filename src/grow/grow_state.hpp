@@ -75,6 +75,16 @@ struct Grower::Impl {
     // single-sample elements only (`fills_holes`).
     double hole_radius = 0.0;
     bool fills_holes = false;
+    // Per type pair (row: a candidate's type, column: an existing element's): whether the
+    // candidate must lie in its proposer's Voronoi cell (grow/generate.cpp, propose). Set for
+    // single-sample exemplars where the pair's closest distance is well under its typical
+    // one, so that the hard core alone does not keep patches copied at misaligned offsets
+    // from both filling one place.
+    std::vector<char> owned;
+    bool any_owned = false;
+    bool owned_by_proposer(int candidate_type, int other_type) const {
+        return owned[candidate_type * exemplar.types.size() + other_type] != 0;
+    }
 
     std::vector<grow::OutElement> out;
     // Elements of each type in `out`, kept by add, drop_tail, set_type and clear (the type

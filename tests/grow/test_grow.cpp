@@ -157,6 +157,29 @@ TEST(Grow, TwoClassGrownTo20TimesItsAreaKeepsSharesPcfAndHolesNearSynthesizeDets
     expect_no_crowding(ex, out, "two class at 20x");
 }
 
+// Real patterns whose closest pair is far under their typical spacing (retinal mosaics of
+// two independent-looking classes, near-random pines): the hard core does not hold their
+// density, so a horizon element's patch fills only its own Voronoi cell. Without it, these
+// grew at 2x (ganglia) to 12x (japanesepines) their density.
+TEST(Grow, SoftRealPatternsKeepTheirDensityAndClassSharesAt20TimesTheirWindow) {
+    for (const std::string name : {"amacrine", "ganglia", "japanesepines"}) {
+        const Exemplar ex = test::field_pattern(name);
+        const Box b = ex.domain.bounds();
+        const double s = std::sqrt(20.0);
+        const Domain region = Domain::box(b.lo, b.lo + Vec3{s * b.size().x, s * b.size().y, 0}, 2);
+        const Arrangement out = grown(ex, region);
+        const double want = ex.elements.size() / ex.domain.measure();
+        const double got = out.elements.size() / region.measure();
+        EXPECT_NEAR(got / want, 1.0, 0.1) << name << ": " << out.elements.size() << " elements";
+        const size_t types = ex.types.size();
+        const std::vector<double> want_share = type_shares(ex.elements, types),
+                                  got_share = type_shares(out.elements, types);
+        for (size_t t = 0; t < types; ++t)
+            EXPECT_NEAR(got_share[t], want_share[t], 0.05 * want_share[t]) << name << " " << ex.types[t].name;
+        expect_no_crowding(ex, out, name);
+    }
+}
+
 TEST(Grow, TwoClassGrownInTwoCallsMatchesOneCallInSharesAndPcf) {
     const Exemplar ex = example("two_class_2d");
     const Box b = ex.domain.bounds();
