@@ -18,6 +18,9 @@ constexpr double kBoundaryPull = 0.5;
 // its own hard core, in at most kNudgeSteps pushes (drop_overlapping).
 constexpr double kNudge = 0.25;
 constexpr int kNudgeSteps = 6;
+// Shapes of the type's pool a multi-sample candidate that touches others tries, after its
+// similarity set (drop_overlapping's reshape), spread over the pool.
+constexpr int kReshapeTries = 32;
 
 // The input entries of `e`'s patch paired with an output element within c (position only:
 // a pair of different types still occupies the place).
@@ -284,9 +287,53 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
         c.p = p;
         return true;
     };
+    // Whether an element or taken candidate sits at p (centroids closer than the merge
+    // distance): a second proposal for that place, not a shape that fails to fit there.
+    auto place_taken = [&](const Vec3& p, int t) {
+        bool taken = false;
+        taken_grid.for_each_within(
+            p, reach, [&](int i) { return kept[i].p; },
+            [&](int i) { taken = taken || norm(kept[i].p - p) < merge * g.hard_core(t, kept[i].type); });
+        g.grid.for_each_within(
+            p, reach, [&](int i) { return g.out[i].p; },
+            [&](int i) {
+                if (i >= g.recent_first && displaced[i - g.recent_first]) return;
+                Vec3 d = g.out[i].p - p;
+                if (g.metric.dimension == 2) d.z = 0.0;
+                taken = taken || norm(d) < g.hard_core(t, g.out[i].type);
+            });
+        return taken;
+    };
+    // A multi-sample candidate whose samples touch others' at a free place takes, if one
+    // fits, the shape of an input element of its similarity set (k-coherence) instead: a
+    // noodle bent otherwise rather than none (growth filled 75% of a noodle exemplar's
+    // density when every such candidate was dropped). Returns true when c was reshaped.
+    std::vector<Vec3> trial;
+    auto reshape = [&](Candidate& c) {
+        if (c.source < 0 || place_taken(c.p, c.type)) return false;
+        const InputElements& in = g.input;
+        const std::vector<int>& pool = in.pool[c.type];
+        const int similar = in.sim_start[c.source + 1] - in.sim_start[c.source];
+        const int stride = std::max<int>(1, static_cast<int>(pool.size()) / kReshapeTries);
+        for (int k = 0; k < similar + kReshapeTries && k - similar < static_cast<int>(pool.size()); ++k) {
+            const int alt = k < similar ? in.sim[in.sim_start[c.source] + k] : pool[((k - similar) * stride) % pool.size()];
+            if (in.type[alt] != c.type || alt == c.source) continue;
+            g.sample_positions(-1, alt, c.frame, c.p, trial);
+            if (region && !std::all_of(trial.begin(), trial.end(), [&](const Vec3& q) { return region->inside(q); }))
+                continue;
+            if (crowds(c.p, c.type, trial, blocking) || !blocking.empty()) continue;
+            c.source = alt;
+            mine.swap(trial);
+            return true;
+        }
+        return false;
+    };
     // Takes candidate c (or not): returns true when taken.
     auto take = [&](Candidate c) {
-        if (by_samples) g.sample_positions(-1, c.source, c.frame, c.p, mine);
+        if (by_samples) {
+            g.sample_positions(-1, c.source, c.frame, c.p, mine);
+            if ((crowds(c.p, c.type, mine, blocking) || !blocking.empty()) && reshape(c)) ++g.reshaped;
+        }
         if (crowds(c.p, c.type, mine, blocking)) return false;
         if (!blocking.empty()) {
             // A type short of its share may take the place of recent elements of types over
