@@ -36,6 +36,15 @@
 
 namespace tessera {
 
+// What the edge of a grow(region) call's region means.
+enum class RegionEdge {
+    closed,  // a wall: every sample of every element lies inside; candidates just outside are
+             // pulled onto the edge, so that it is not left with a gap (default)
+    open,    // one cell of a partition (the tiles of a world, tessera/world.hpp): only element
+             // centres lie inside, samples may reach beyond, and candidates outside are left
+             // to the neighbouring cell
+};
+
 // How a round chooses among its candidates.
 enum class GrowChoice {
     patch,  // every filtered candidate: the input patch that fits best is copied (default)
@@ -111,6 +120,11 @@ public:
     // Starts from a copy of an exemplar patch centred at `center` (its elements are the first
     // horizon). grow() does this at the region's centre when the arrangement is empty.
     void seed(const Vec3& center);
+    // Starts from a patch at each centre, each drawn as seed() draws one; an element of a later
+    // patch that would come closer to an element already there than their hard core is left
+    // out. All are the first horizon. (A world's first tiles start so: one patch would make
+    // every tile that draws the same seed element the same tile.)
+    void seed(const std::vector<Vec3>& centres);
     // Starts from `existing`, whose types are matched to the exemplar's by name
     // (Error(input) for an unknown type or a different sample count). Its elements become
     // locked and are the first horizon.
@@ -119,7 +133,7 @@ public:
     // Grows until `region` takes no more elements: candidates outside it are discarded.
     // Error(domain) for an empty region, Error(input) when the arrangement is not empty and
     // no element lies within reach of the region.
-    GrowReport grow(const Domain& region);
+    GrowReport grow(const Domain& region, RegionEdge edge = RegionEdge::closed);
     // Grows by about n elements (Error(option) for n <= 0), outward from the arrangement.
     GrowReport grow(int n);
     // One round, unbounded (no region).

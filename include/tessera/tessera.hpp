@@ -22,3 +22,4 @@
 #include "tessera/render.hpp"
 #include "tessera/vec.hpp"
 #include "tessera/version.hpp"
+#include "tessera/world.hpp"

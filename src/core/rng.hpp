@@ -27,6 +27,7 @@ enum class Purpose : std::uint64_t {
     pcf_radii = 7,  // PCF synthesis: radii drawn to make up a shortfall
     grow_seed = 8,      // growth: where in the exemplar the seed patch is taken
     grow_playout = 9,   // growth: the tree search's random play-outs
+    world_seed = 10,    // worlds: where a first-phase tile's seed patches go
     test = 99
 };
 

@@ -113,6 +113,7 @@ int drop_outside(const Grower::Impl& g, const Domain& region, std::vector<Candid
     const size_t before = candidates.size();
     const double pull = kBoundaryPull * g.metric.params.spacing;
     std::erase_if(candidates, [&](Candidate& c) {
+        if (g.open_region) return !region.inside(c.p);  // the neighbouring cell's to place
         if (!region.inside(c.p)) {
             // Just outside: moved to the boundary, so that the region's edge is not left
             // with a gap wherever the pattern's rows happen to fall beyond it.
@@ -319,8 +320,7 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
             const int alt = k < similar ? in.sim[in.sim_start[c.source] + k] : pool[((k - similar) * stride) % pool.size()];
             if (in.type[alt] != c.type || alt == c.source) continue;
             g.sample_positions(-1, alt, c.frame, c.p, trial);
-            if (region && !std::all_of(trial.begin(), trial.end(), [&](const Vec3& q) { return region->inside(q); }))
-                continue;
+            if (region && !g.fits_region(*region, -1, alt, c.frame, c.p, theirs)) continue;
             if (crowds(c.p, c.type, trial, blocking) || !blocking.empty()) continue;
             c.source = alt;
             mine.swap(trial);

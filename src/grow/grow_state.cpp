@@ -165,4 +165,11 @@ void Grower::Impl::sample_positions(int kept, int source, const Quat& frame, con
     }
 }
 
+bool Grower::Impl::fits_region(const Domain& region, int kept, int source, const Quat& frame, const Vec3& p,
+                               std::vector<Vec3>& samples) const {
+    if (open_region) return region.inside(p);
+    sample_positions(kept, source, frame, p, samples);
+    return std::all_of(samples.begin(), samples.end(), [&](const Vec3& q) { return region.inside(q); });
+}
+
 }  // namespace tessera

@@ -107,6 +107,17 @@ struct Grower::Impl {
     std::uint64_t next_id = 0;
     Box grown;  // union of the regions grown (the arrangement's domain)
     bool has_bounds = false;
+    // The grow(region) call in progress treats the region as one cell of a partition
+    // (RegionEdge::open, the tiles of a world): only element centres must lie in it, samples
+    // may reach beyond, and candidates just outside are left to the neighbouring cell.
+    bool open_region = false;
+    // seed() placed the last patches and no round has run since: grow(region) keeps those of
+    // their elements that fit the region (the others would be outside it).
+    bool seed_pending = false;
+    // Whether an element of input layout `source` in `frame` at p lies in the region as the
+    // call in progress counts it: its centre (open region) or every sample (samples: scratch).
+    bool fits_region(const Domain& region, int kept, int source, const Quat& frame, const Vec3& p,
+                     std::vector<Vec3>& samples) const;
 
     Progress progress;
     ProgressEvent last_event;  // the last event sent, sent again by the interrupt's polls

@@ -81,6 +81,7 @@ GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done
         }
         grow::RoundLimits limits = base;
         if (base.budget >= 0) limits.budget = base.budget - (report.added - seeded);
+        g.seed_pending = false;
         const int added = grow::run_round(g, limits, report);  // a cancel leaves last_report as it was
         ++report.rounds;
         keep();
@@ -116,11 +117,14 @@ double Grower::radius() const {
     return impl_->metric.params.radius;
 }
 
-void Grower::seed(const Vec3& center) {
-    Impl& g = *impl_;
+namespace {
+
+// Adds a copy of an exemplar patch centred at `center` to the horizon: the seed element is
+// drawn among the elements whose whole patch lies in the exemplar (all elements when none
+// does), keyed by the seed and the world cell of the centre. With `spare_others`, an element
+// that would come closer to one already there than their hard core is left out.
+void add_seed_patch(Grower::Impl& g, const Vec3& center, bool spare_others) {
     const grow::InputElements& in = g.input;
-    // The seed element: drawn among the elements whose whole patch lies in the exemplar
-    // (all elements when none does), keyed by the seed and the world cell of the centre.
     std::vector<int> interior;
     for (int i = 0; i < in.size(); ++i)
         if (g.exemplar.domain.distance_to_boundary(in.centroid[i]) >= g.metric.patch_radius)
@@ -135,14 +139,18 @@ void Grower::seed(const Vec3& center) {
             static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.z / cell))));
     const int e = interior[rng.below(0, interior.size())];
     const Quat frame = g.frame_at(center);
-    g.horizon.clear();
-    ++g.round;
-    g.round_first.push_back(static_cast<int>(g.out.size()));
     auto place = [&](int source, const Vec3& offset) {
         grow::OutElement o;
         o.p = center + frame.rotate(offset);
         if (g.metric.dimension == 2) o.p.z = 0.0;
         o.type = in.type[source];
+        if (spare_others) {
+            bool near = false;
+            g.grid.for_each_within(
+                o.p, g.reach, [&](int i) { return g.out[i].p; },
+                [&](int i) { near = near || norm(g.out[i].p - o.p) < g.hard_core(o.type, g.out[i].type); });
+            if (near) return;
+        }
         o.source = o.match = source;
         o.frame = frame;
         o.born = g.round;
@@ -151,6 +159,19 @@ void Grower::seed(const Vec3& center) {
     };
     place(e, Vec3{});
     for (int k = 0; k < in.patch_count[e]; ++k) place(in.neighbors(e)[k].element, in.neighbors(e)[k].offset);
+}
+
+}  // namespace
+
+void Grower::seed(const Vec3& center) { seed(std::vector<Vec3>{center}); }
+
+void Grower::seed(const std::vector<Vec3>& centres) {
+    Impl& g = *impl_;
+    g.horizon.clear();
+    ++g.round;
+    g.round_first.push_back(static_cast<int>(g.out.size()));
+    for (size_t k = 0; k < centres.size(); ++k) add_seed_patch(g, centres[k], k > 0);
+    g.seed_pending = true;
 }
 
 void Grower::set_arrangement(const Arrangement& existing) {
@@ -177,6 +198,7 @@ void Grower::set_arrangement(const Arrangement& existing) {
     }
     Impl& h = g;  // a fresh output over the same index
     h.clear();
+    h.seed_pending = false;
     h.horizon.clear();
     h.round = 0;
     h.round_first.clear();
@@ -204,8 +226,13 @@ void Grower::set_arrangement(const Arrangement& existing) {
     extend(h.grown, h.has_bounds, existing.domain.bounds());
 }
 
-GrowReport Grower::grow(const Domain& region) {
+GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
     Impl& g = *impl_;
+    struct OpenFor {  // the edge rule holds for this call only, also when it throws
+        bool& flag;
+        ~OpenFor() { flag = false; }
+    } open_for{g.open_region};
+    g.open_region = edge == RegionEdge::open;
     if (region.dimension() != g.metric.dimension)
         throw Error(ErrorKind::domain, "region: " + std::to_string(region.dimension()) +
                                            "D, the exemplar is " + std::to_string(g.metric.dimension) + "D");
@@ -213,21 +240,20 @@ GrowReport Grower::grow(const Domain& region) {
         throw Error(ErrorKind::domain, "region: it is empty (zero area or volume)");
     const double reach = g.metric.patch_radius + g.metric.params.radius;
     int seeded = 0;
-    if (g.out.empty()) {
-        seed(region.closest_inside(region.bounds().center()));
-        std::vector<char> keep(g.out.size());
+    if (g.out.empty()) seed(region.closest_inside(region.bounds().center()));
+    if (g.seed_pending) {  // the seed patches, kept where they fit the region
+        const int first = g.round_first.back(), n = static_cast<int>(g.out.size());
+        std::vector<char> keep(n - first);
         std::vector<Vec3> samples;
-        for (size_t i = 0; i < g.out.size(); ++i) {
-            g.sample_positions(-1, g.out[i].source, g.out[i].frame, g.out[i].p, samples);
-            keep[i] =
-                std::all_of(samples.begin(), samples.end(), [&](const Vec3& q) { return region.inside(q); });
-        }
-        g.drop_tail(0, keep);
+        for (int i = first; i < n; ++i)
+            keep[i - first] = g.fits_region(region, -1, g.out[i].source, g.out[i].frame, g.out[i].p, samples);
+        g.drop_tail(first, keep);
         g.horizon.clear();
-        for (size_t i = 0; i < g.out.size(); ++i) g.horizon.push_back(static_cast<int>(i));
-        if (g.out.empty())
+        for (int i = first; i < static_cast<int>(g.out.size()); ++i) g.horizon.push_back(i);
+        g.seed_pending = false;
+        if (g.horizon.empty())
             throw Error(ErrorKind::domain, "region: too small to hold the exemplar's elements");
-        seeded = static_cast<int>(g.out.size());
+        seeded = static_cast<int>(g.horizon.size());
     } else {
         std::vector<int> near = elements_near(g, region, reach);
         if (near.empty())
@@ -290,6 +316,7 @@ GrowReport Grower::step() {
     }
     g.interrupt.rearm();
     const int before = report.added;
+    g.seed_pending = false;
     grow::run_round(g, grow::RoundLimits{}, report);
     report.rounds = 1;
     report.covered = report.added == before;

@@ -159,12 +159,8 @@ void solve(Grower::Impl& g, const Unknowns& u, const std::vector<std::vector<Pre
         Vec3 p = g.out[v].p;
         for (int k = 0; k < dims; ++k) p[k] = x(c, k);
         if (!is_finite(p)) continue;
-        if (region) {
-            g.sample_positions(g.out[v].kept, g.out[v].source, g.out[v].frame, p, samples);
-            if (!std::all_of(samples.begin(), samples.end(),
-                             [&](const Vec3& q) { return region->inside(q); }))
-                continue;
-        }
+        if (region && !g.fits_region(*region, g.out[v].kept, g.out[v].source, g.out[v].frame, p, samples))
+            continue;
         g.move(v, p);
     }
 }

@@ -52,14 +52,19 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
     const Domain around = Domain::box(blo, bhi, part.dimension);
     core::CrowdingRepairOptions options;
     options.threads = g.threads;  // the same result for any count
+    // An open region (a world's tile) holds centres only: the repair may move samples past
+    // its edge, and a move that would take a centre out of it is not made.
+    const bool walled = region && !g.open_region;
     const core::CrowdingRepairReport report =
-        core::repair_crowding(part, region ? *region : around, g.bounds, options);
+        core::repair_crowding(part, walled ? *region : around, g.bounds, options);
     for (size_t k = 0; k < movable.size(); ++k) {
         const Element& e = part.elements[k];
         if (e.locked) continue;
         Vec3 c;
         for (int s = 0; s < e.sample_count; ++s) c = c + part.samples[e.first_sample + s].p;
-        g.move(movable[k], c * (1.0 / e.sample_count));
+        c = c * (1.0 / e.sample_count);
+        if (region && g.open_region && !region->inside(c)) continue;
+        g.move(movable[k], c);
     }
     return report.remaining;
 }

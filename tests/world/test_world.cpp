@@ -1,0 +1,291 @@
+// Worlds of deterministic tiles (include/tessera/world.hpp): what a world builder relies on.
+// A tile is the same whatever order, thread count or cache it was made with; a world asked
+// for tile by tile equals the world made at once; borders show no crowding, no duplicate and
+// no change of the pair correlation; class shares hold in every tile; bad input is an error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "quality_data.hpp"
+#include "temp_dir.hpp"
+#include "tessera/error.hpp"
+#include "tessera/tessera.hpp"
+
+using namespace tessera;
+using test::example;
+
+namespace {
+
+WorldOptions world_options(double tile_size, int threads = 1) {
+    WorldOptions o;
+    o.tile_size = tile_size;
+    o.grow.threads = threads;
+    return o;
+}
+
+std::vector<TileCoord> block(int n) {
+    std::vector<TileCoord> tiles;
+    for (int x = 0; x < n; ++x)
+        for (int y = 0; y < n; ++y) tiles.push_back({x, y, 0});
+    return tiles;
+}
+
+std::map<TileCoord, std::string> texts(World& w, const std::vector<TileCoord>& tiles) {
+    std::map<TileCoord, std::string> out;
+    for (const TileCoord& t : tiles) out[t] = tile_to_json(w.tile(t));
+    return out;
+}
+
+Arrangement merged(World& w, const std::vector<TileCoord>& tiles) {
+    std::vector<const Arrangement*> parts;
+    for (const TileCoord& t : tiles) parts.push_back(&w.tile(t));
+    return merge_tiles(parts, w.maker().dimension());
+}
+
+// The elements of `a` inside the box, as an arrangement of that window.
+Arrangement window(const Arrangement& a, const Vec3& lo, const Vec3& hi) {
+    Arrangement out;
+    out.dimension = a.dimension;
+    out.types = a.types;
+    out.domain = Domain::box(lo, hi, a.dimension);
+    for (const Element& e : a.elements)
+        if (e.position.x >= lo.x && e.position.x < hi.x && e.position.y >= lo.y && e.position.y < hi.y)
+            out.add_element(e.type, {e.position}, e.radius);
+    return out;
+}
+
+
+// Rounded to 1e-4: a translated copy made by the same deterministic growth lands on the same
+// keys; independent growth does not.
+std::string position_key(int type, double x, double y) {
+    return std::to_string(type) + ":" + std::to_string(std::llround(x * 1e4)) + "," + std::to_string(std::llround(y * 1e4));
+}
+
+// The largest share of a's elements that one translation maps onto elements of b. Candidate
+// translations come from pairs of elements with the same nearest-neighbour offset (a copy
+// keeps it), so the search is not quadratic in candidates.
+double largest_translated_overlap(const Arrangement& a, const Arrangement& b) {
+    auto signature = [](const Arrangement& t, size_t i) {
+        size_t best = i;
+        double best_d = 1e300;
+        for (size_t k = 0; k < t.elements.size(); ++k)
+            if (k != i) {
+                const double d = norm(t.elements[k].position - t.elements[i].position);
+                if (d < best_d) best_d = d, best = k;
+            }
+        const Vec3 v = t.elements[best].position - t.elements[i].position;
+        return position_key(t.elements[i].type, v.x, v.y);
+    };
+    std::set<std::string> in_b;
+    std::multimap<std::string, size_t> b_by_signature;
+    for (size_t k = 0; k < b.elements.size(); ++k) {
+        const Element& e = b.elements[k];
+        in_b.insert(position_key(e.type, e.position.x, e.position.y));
+        b_by_signature.emplace(signature(b, k), k);
+    }
+    std::set<std::string> tried;
+    size_t best = 0;
+    for (size_t i = 0; i < a.elements.size(); ++i) {
+        const auto range = b_by_signature.equal_range(signature(a, i));
+        for (auto it = range.first; it != range.second; ++it) {
+            const Vec3 v = b.elements[it->second].position - a.elements[i].position;
+            if (!tried.insert(position_key(0, v.x, v.y)).second) continue;
+            size_t hits = 0;
+            for (const Element& e : a.elements) hits += in_b.count(position_key(e.type, e.position.x + v.x, e.position.y + v.y));
+            best = std::max(best, hits);
+        }
+    }
+    return a.elements.empty() ? 0.0 : static_cast<double>(best) / static_cast<double>(a.elements.size());
+}
+
+}  // namespace
+
+TEST(World, PhasesColourTheGridSoThatNoTwoTouchingTilesShareOne) {
+    for (const int dim : {2, 3}) {
+        const int dz = dim == 3 ? 1 : 0;
+        for (std::int64_t x = -3; x <= 3; ++x)
+            for (std::int64_t y = -3; y <= 3; ++y)
+                for (std::int64_t z = -dz; z <= dz; ++z) {
+                    const TileCoord t{x, y, z};
+                    EXPECT_LT(tile_phase(t, dim), tile_phases(dim));
+                    for (const TileCoord& d : tile_dependencies(t, dim)) {
+                        EXPECT_LT(tile_phase(d, dim), tile_phase(t, dim));
+                        EXPECT_LE(std::max({std::abs(d.x - t.x), std::abs(d.y - t.y), std::abs(d.z - t.z)}), 1);
+                    }
+                    for (std::int64_t i = -1; i <= 1; ++i)
+                        for (std::int64_t j = -1; j <= 1; ++j)
+                            for (std::int64_t k = -dz; k <= dz; ++k)
+                                if (i || j || k) {
+                                    EXPECT_NE(tile_phase({x + i, y + j, z + k}, dim), tile_phase(t, dim));
+                                }
+                }
+    }
+    EXPECT_EQ(tile_dependencies({1, 1, 0}, 2).size(), 8u);  // the last phase waits for all its neighbours
+    EXPECT_TRUE(tile_dependencies({0, 0, 0}, 2).empty());
+    EXPECT_EQ(tile_at({-0.5, 2.5, 0}, 1.0, 2), (TileCoord{-1, 2, 0}));
+}
+
+TEST(World, ATileIsTheSameWhateverOrderAndThreadCountItWasMadeIn) {
+    const Exemplar ex = example("two_class_2d");
+    const std::vector<TileCoord> tiles = block(4);
+    World in_order(ex, world_options(12.0, 1));
+    const std::map<TileCoord, std::string> reference = texts(in_order, tiles);
+    std::vector<TileCoord> shuffled = tiles;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(7));
+    World random_order(ex, world_options(12.0, 2));
+    const std::map<TileCoord, std::string> other = texts(random_order, shuffled);
+    for (const TileCoord& t : tiles) EXPECT_EQ(reference.at(t), other.at(t)) << "tile " << t.describe();
+    EXPECT_EQ(in_order.made(), random_order.made());
+}
+
+TEST(World, AWorldAskedAroundMovingPointsEqualsTheWorldMadeAtOnce) {
+    const Exemplar ex = example("poisson_disk_2d");
+    const double size = 10.0;
+    World at_once(ex, world_options(size));
+    const std::vector<TileCoord> tiles = block(5);
+    const Arrangement whole = merged(at_once, tiles);
+    World streamed(ex, world_options(size));
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> where(0.0, 5 * size);
+    for (int k = 0; k < 6; ++k) streamed.around({where(rng), where(rng), 0.0}, 0.6 * size);
+    for (const TileCoord& t : tiles) EXPECT_EQ(tile_to_json(at_once.tile(t)), tile_to_json(streamed.tile(t))) << t.describe();
+    EXPECT_EQ(tile_to_json(whole), tile_to_json(merged(streamed, tiles)));
+}
+
+TEST(World, FirstPhaseTilesDoNotRepeatEachOther) {
+    // Tiles without neighbours start from keyed seeds; growth is deterministic once seeded,
+    // so a tile whose seeding repeated another's would be a translated copy of it, a stamp a
+    // world builder sees at once. No translation may map more than a patch's worth of one
+    // first-phase tile onto another.
+    for (const char* name : {"two_class_2d", "poisson_disk_2d", "hex_jittered_2d", "striped_dots_2d", "sticks_2d"}) {
+    const Exemplar ex = example(name);
+    const TileMaker maker(ex, world_options(12.0));
+    std::vector<Arrangement> tiles;
+    for (std::int64_t x = 0; x < 8; x += 2)
+        for (std::int64_t y = 0; y < 4; y += 2) {
+            ASSERT_TRUE(tile_dependencies({x, y, 0}, 2).empty());
+            tiles.push_back(maker.make({x, y, 0}, {}));
+        }
+    double worst = 0.0;
+    for (size_t i = 0; i < tiles.size(); ++i)
+        for (size_t j = i + 1; j < tiles.size(); ++j)
+            worst = std::max(worst, largest_translated_overlap(tiles[i], tiles[j]));
+    EXPECT_LT(worst, 0.25) << "a share of one first-phase tile reappears translated in another";
+    }
+}
+
+class WorldCache : public test::TempDirTest {};
+
+TEST_F(WorldCache, TilesReadBackFromTheCacheAreTheTilesMade) {
+    const Exemplar ex = example("sticks_2d");
+    const std::vector<TileCoord> tiles = block(3);
+    std::map<TileCoord, std::string> first;
+    {
+        World w(ex, world_options(12.0), path("cache"));
+        first = texts(w, tiles);
+        EXPECT_GT(w.made(), 0);
+    }
+    World again(ex, world_options(12.0), path("cache"));
+    EXPECT_EQ(texts(again, tiles), first);
+    EXPECT_EQ(again.made(), 0) << "every tile should have been read from the cache";
+    WorldOptions other = world_options(12.0);
+    other.grow.seed = 2;
+    EXPECT_THROW(World(ex, other, path("cache")), Error);  // the cache holds another world
+}
+
+TEST(World, ElementsBelongToOneTileAndKeepTheirShapesAcrossBorders) {
+    const Exemplar ex = example("sticks_2d");
+    World w(ex, world_options(12.0));
+    for (const TileCoord& t : block(3)) {
+        const Arrangement& a = w.tile(t);
+        for (const Element& e : a.elements) EXPECT_EQ(tile_at(e.position, 12.0, 2), t);
+    }
+    const Arrangement all = merged(w, block(3));
+    test::expect_no_crowding(ex, all, "sticks over 3 x 3 tiles");
+    std::set<std::pair<double, double>> places;
+    for (const Element& e : all.elements) EXPECT_TRUE(places.insert({e.position.x, e.position.y}).second);
+}
+
+TEST(World, BordersKeepThePairCorrelationAndNoPairCrowdsAcrossThem) {
+    const Exemplar ex = example("poisson_disk_2d");
+    const double size = 12.0, half = 4.0;
+    World w(ex, world_options(size));
+    const std::vector<TileCoord> tiles = block(4);
+    const Arrangement all = merged(w, tiles);
+    // Windows centred on the inner tile corners against windows centred in the tiles.
+    double corner_error = 0.0, inside_error = 0.0;
+    int corners = 0, insides = 0;
+    for (int i = 1; i < 4; ++i)
+        for (int j = 1; j < 4; ++j) {
+            const Vec3 c{i * size, j * size, 0}, m{(i - 0.5) * size, (j - 0.5) * size, 0};
+            corner_error += pcf_relative_error(ex, window(all, c - Vec3{half, half, 0}, c + Vec3{half, half, 0}));
+            inside_error += pcf_relative_error(ex, window(all, m - Vec3{half, half, 0}, m + Vec3{half, half, 0}));
+            ++corners, ++insides;
+        }
+    corner_error /= corners, inside_error /= insides;
+    EXPECT_LE(corner_error, 1.25 * inside_error + 0.01) << "corners " << corner_error << ", inside " << inside_error;
+    // The closest pair across a border is no closer than the exemplar's closest pair allows.
+    const double closest = nearest_neighbor_distances(ex).min;
+    double across = 1e300;
+    for (size_t a = 0; a < all.elements.size(); ++a)
+        for (size_t b = a + 1; b < all.elements.size(); ++b) {
+            const Vec3 pa = all.elements[a].position, pb = all.elements[b].position;
+            if (tile_at(pa, size, 2) != tile_at(pb, size, 2)) across = std::min(across, norm(pa - pb));
+        }
+    EXPECT_GE(across, 0.95 * closest) << "closest pair across a border " << across << ", exemplar " << closest;
+    test::expect_no_crowding(ex, all, "Poisson disks over 4 x 4 tiles");
+    EXPECT_LE(largest_empty_circle(window(all, {size * 0.5, size * 0.5, 0}, {size * 3.5, size * 3.5, 0})).radius,
+              1.3 * largest_empty_circle(ex).radius);
+}
+
+TEST(World, EveryTileKeepsTheClassShares) {
+    const Exemplar ex = example("striped_dots_2d");
+    World w(ex, world_options(14.0));
+    double exemplar_share = 0.0;
+    for (const Element& e : ex.elements) exemplar_share += e.type == 0 ? 1.0 / ex.elements.size() : 0.0;
+    for (const TileCoord& t : block(3)) {
+        const Arrangement& a = w.tile(t);
+        double share = 0.0;
+        for (const Element& e : a.elements) share += e.type == 0 ? 1.0 / a.elements.size() : 0.0;
+        const double noise = std::sqrt(exemplar_share * (1 - exemplar_share) / a.elements.size());
+        EXPECT_NEAR(share, exemplar_share, 0.02 + 3.0 * noise) << "tile " << t.describe() << " of " << a.elements.size();
+    }
+}
+
+TEST(World, ThreeDimensionalTilesMeetWithoutCrowding) {
+    const Exemplar ex = example("spheres_3d");
+    World w(ex, world_options(1.2 * TileMaker(ex, world_options(100.0)).min_tile_size()));
+    std::vector<const Arrangement*> parts;
+    for (std::int64_t x = 0; x < 2; ++x)
+        for (std::int64_t y = 0; y < 2; ++y)
+            for (std::int64_t z = 0; z < 2; ++z) parts.push_back(&w.tile({x, y, z}));
+    const Arrangement all = merge_tiles(parts, 3);
+    EXPECT_GT(all.elements.size(), 0u);
+    test::expect_no_crowding(ex, all, "spheres over 2 x 2 x 2 tiles");
+}
+
+TEST(World, BadInputIsAClearError) {
+    const Exemplar ex = example("poisson_disk_2d");
+    auto message = [](auto&& f) {
+        try {
+            f();
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message([&] { TileMaker(ex, world_options(0.0)); }).find("tile_size"), std::string::npos);
+    EXPECT_NE(message([&] { TileMaker(ex, world_options(1.0)); }).find("smaller than the neighbourhood"), std::string::npos);
+    const TileMaker maker(ex, world_options(10.0));
+    EXPECT_NE(message([&] { maker.make({1, 0, 0}, {}); }).find("is not given"), std::string::npos);
+    const Arrangement t00 = maker.make({0, 0, 0}, {});
+    EXPECT_NE(message([&] { maker.make({1, 0, 0}, {{{0, 0, 0}, &t00}, {{0, 0, 0}, &t00}}); }).find("tile"),
+              std::string::npos);
+    EXPECT_NE(message([&] { maker.make({0, 0, 1}, {}); }).find("z = 0"), std::string::npos);
+}
