@@ -8,8 +8,8 @@
 // any machine. A tile is grown (tessera/grow.hpp, RegionEdge::open) next to the final elements
 // of its neighbours of earlier phases, which it treats as locked: its elements depend only on
 // (exemplar, options, seed, tile coordinates) and those neighbours, never on which other tiles
-// were made, in which order or where. A tile of phase 0 starts from an exemplar patch at its
-// centre, drawn by a key of the seed and that place.
+// were made, in which order or where. A tile without neighbours (phase 0) starts from
+// exemplar patches at places drawn by a key of the seed and the tile's coordinates.
 //
 // The same exemplar, options and seed give byte-identical tiles whatever the order, the thread
 // count, the process or the machine (the same build): every draw is keyed by world position,
@@ -41,7 +41,7 @@ struct NeighbourTile {
 };
 
 struct WorldOptions {
-    double tile_size = 0.0;  // edge of a tile, > 0 and at least world_min_tile_size()
+    double tile_size = 0.0;  // edge of a tile, > 0 and at least TileMaker::min_tile_size()
     GrowOptions grow;        // how each tile grows (seed, threads and every growth option)
 };
 
