@@ -151,5 +151,6 @@ Subcommand add_edit_command(CLI::App& app);
 Subcommand add_scene_command(CLI::App& app);
 Subcommand add_analyze_command(CLI::App& app);
 Subcommand add_grow_command(CLI::App& app);
+Subcommand add_world_command(CLI::App& app);
 
 }  // namespace tessera_cli

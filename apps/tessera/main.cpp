@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
 
     const Subcommand commands[] = {add_synth_command(app), add_metrics_command(app), add_render_command(app),
                                     add_edit_command(app), add_scene_command(app), add_analyze_command(app),
-                                    add_grow_command(app)};
+                                    add_grow_command(app), add_world_command(app)};
 
     try {
         app.parse(argc, argv);

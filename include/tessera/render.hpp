@@ -28,6 +28,10 @@ struct RenderOptions {
     // without a mesh file get default shapes), off = never, automatic = draw element
     // meshes when some type of the data has a mesh file (ElementType::mesh).
     enum class Meshes { automatic, on, off } meshes = Meshes::automatic;
+    // Faint lines every `grid` units from the world origin across the domain's bounds (the
+    // tile borders of a world, docs/worlds.md): in 2D the lines, in 3D the edges of every
+    // grid cell. 0 = none; at most 4096 cells along an axis.
+    double grid = 0.0;
 };
 
 // An sRGB colour, 8 bits per component.

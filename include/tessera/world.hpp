@@ -18,6 +18,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -99,9 +100,23 @@ private:
 std::string tile_to_json(const Arrangement& tile);
 // FNV-1a 64 of tile_to_json, as 16 hex digits: the content hash of a world's index.
 std::string tile_hash(const Arrangement& tile);
+// FNV-1a 64 of any text, as 16 hex digits (tile_hash is that of tile_to_json).
+std::string content_hash(const std::string& content);
 // Tiles merged into one arrangement (ids renumbered 0, 1, ... in the order given), the union
 // of their boxes as domain.
 Arrangement merge_tiles(const std::vector<const Arrangement*>& tiles, int dimension);
+
+// The tiles `wanted` and every tile they depend on, transitively (a tile at the edge of a
+// range needs neighbours outside it, which need theirs): sorted by phase, then coordinates.
+std::vector<TileCoord> tile_closure(const std::vector<TileCoord>& wanted, int dimension);
+
+// Every tile of tile_closure(wanted), made phase by phase, `threads` tiles of one phase at once
+// (0 = all cores). Each tile grows with the maker's own grow.threads: give the maker 1 when the
+// phases hold at least as many tiles as threads. The same tiles whatever `threads`. Progress:
+// stage "tile", iteration = tiles finished, iterations = tiles in all; false cancels (Cancelled)
+// once the tiles under way have finished.
+std::map<TileCoord, Arrangement> make_tiles(const TileMaker& maker, const std::vector<TileCoord>& wanted,
+                                            int threads, const Progress& progress = {});
 
 // A world answered on demand ("the tiles around this point"): computes only the tiles asked
 // for and their dependencies, keeps every finished tile in memory and, with a cache

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "render/class_colors.hpp"
+#include "render/grid.hpp"
 #include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/raster.hpp"
@@ -86,6 +87,11 @@ std::string render_png_2d(const Exemplar& data, const RenderOptions& options) {
     const Legend legend = make_legend(data, colors, frame.width, options);
     check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));
     Canvas canvas(frame.width, frame.height, white);
+    if (options.grid > 0.0) {
+        for (const auto& [a, b] : grid_lines(data.domain.bounds(), options.grid, 2))
+            canvas.add_capsule(frame.px(a.x), frame.py(a.y), frame.px(b.x), frame.py(b.y), 0.6);
+        canvas.composite(grid_grey);
+    }
     if (options.show_domain) draw_domain_outline(canvas, frame, data.domain);
     for (const auto& e : data.elements) {
         if (e.sample_count <= 1)

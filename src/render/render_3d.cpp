@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/class_colors.hpp"
+#include "render/grid.hpp"
 #include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/raster.hpp"
@@ -68,6 +69,8 @@ std::string render_png_3d(const Exemplar& data, const RenderOptions& options) {
     if (options.show_domain)
         for (const auto& [a, b] : box_edges(data.domain.bounds()))
             draw_hidden_edge(buf.color, buf.depth, buf.width, view, frame, ss, a, b);
+    for (const auto& [a, b] : grid_lines(data.domain.bounds(), options.grid, 3))
+        draw_hidden_edge(buf.color, buf.depth, buf.width, view, frame, ss, a, b);
     Canvas canvas = box_filter(buf.color, buf.width, ss);
     draw_legend_png(canvas, legend);
     return canvas.encode_png();

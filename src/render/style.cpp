@@ -49,6 +49,8 @@ void check_options(const RenderOptions& options) {
     if (options.width < min_width || options.width > max_size)
         throw Error(ErrorKind::option, "width: must be between " + std::to_string(min_width) + " and " +
                                            std::to_string(max_size) + " pixels, got " + std::to_string(options.width));
+    if (!(options.grid >= 0.0) || !std::isfinite(options.grid))
+        throw Error(ErrorKind::option, "grid: must be a spacing >= 0 (0 = no grid)");
 }
 
 void check_picture_size(int width, int height) {

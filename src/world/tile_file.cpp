@@ -10,10 +10,12 @@ namespace tessera {
 
 std::string tile_to_json(const Arrangement& tile) { return to_json(tile); }
 
-std::string tile_hash(const Arrangement& tile) {
+std::string tile_hash(const Arrangement& tile) { return content_hash(tile_to_json(tile)); }
+
+std::string content_hash(const std::string& content) {
     // FNV-1a, 64 bits: a content hash to compare tiles by, not a cryptographic one.
     std::uint64_t h = 14695981039346656037ull;
-    for (const unsigned char c : tile_to_json(tile)) h = (h ^ c) * 1099511628211ull;
+    for (const unsigned char c : content) h = (h ^ c) * 1099511628211ull;
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
     return text;

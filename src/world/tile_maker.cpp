@@ -135,7 +135,7 @@ std::string describe_options(const WorldOptions& o) {
 TileMaker::TileMaker(const Exemplar& exemplar, const WorldOptions& options) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     if (!(options.tile_size > 0.0) || !std::isfinite(options.tile_size))
-        throw Error(ErrorKind::option, "tile_size must be a number > 0, got " + format_option_value(options.tile_size));
+        throw Error(ErrorKind::option, "tile_size: must be a number > 0, got " + format_option_value(options.tile_size));
     const Grower probe(exemplar, options.grow);  // validates the exemplar and the growth options
     m.exemplar = exemplar;
     m.options = options;
@@ -145,7 +145,7 @@ TileMaker::TileMaker(const Exemplar& exemplar, const WorldOptions& options) : im
     m.margin = m.patch_radius + m.radius + 2.0 * element_extent(exemplar);
     m.min_tile = m.margin;
     if (options.tile_size < m.min_tile)
-        throw Error(ErrorKind::option, "tile_size " + format_option_value(options.tile_size) +
+        throw Error(ErrorKind::option, "tile_size: " + format_option_value(options.tile_size) +
                                            " is smaller than the neighbourhood it must hold (" +
                                            format_option_value(m.min_tile) + " for this exemplar)");
     m.fingerprint = to_json(exemplar) + "\n" + describe_options(options);

@@ -127,3 +127,23 @@ TEST(Render2d, SingleElementAndOptionErrors) {
     }
     EXPECT_THROW(render_svg(one, {.width = 100000}), Error);
 }
+
+TEST(Render2d, AGridDrawsFaintTileBordersBehindTheElements) {
+    // A world's tile borders at multiples of 5: grey on the line x = 5 away from elements,
+    // white beside it and where no grid is asked for, the element's colour on top of a line.
+    Exemplar ex = two_disks();
+    ex.add_element(0, {Vec3{5, 5, 0}}, 1.0);
+    const auto f = frame_of(ex, 400);
+    const auto plain = test::decode_png(render_png(ex, {.width = 400, .show_legend = false}));
+    RenderOptions options{.width = 400, .show_legend = false};
+    options.grid = 5.0;
+    const auto img = test::decode_png(render_png(ex, options));
+    const int line_x = static_cast<int>(std::lround(f.px(5))), free_y = static_cast<int>(f.py(8.5));
+    EXPECT_EQ(test::color_distance(plain.at(line_x, free_y), render::white), 0);
+    EXPECT_GT(test::color_distance(img.at(line_x, free_y), render::white), 10);
+    EXPECT_LT(test::color_distance(img.at(line_x, free_y), render::white), 120);  // faint
+    EXPECT_EQ(test::color_distance(img.at(line_x + 6, free_y), render::white), 0);
+    EXPECT_LE(test::color_distance(img.at(line_x, static_cast<int>(f.py(5))), render::class_color(0)), 1);
+    options.grid = -1.0;
+    EXPECT_THROW(render_png(ex, options), Error);
+}

@@ -180,6 +180,29 @@ TEST(World, FirstPhaseTilesDoNotRepeatEachOther) {
     }
 }
 
+TEST(World, TilesMadePhaseByPhaseOnThreadsAreTheTilesMadeOneByOne) {
+    const Exemplar ex = example("two_class_2d");
+    const std::vector<TileCoord> wanted = {{1, 1, 0}, {2, 1, 0}, {1, 2, 0}, {2, 2, 0}};
+    const std::vector<TileCoord> closure = tile_closure(wanted, 2);
+    for (const TileCoord& t : closure)  // closed under dependencies, in phase order
+        for (const TileCoord& d : tile_dependencies(t, 2)) {
+            const auto at = std::find(closure.begin(), closure.end(), d);
+            ASSERT_NE(at, closure.end()) << d.describe();
+            EXPECT_LT(at - closure.begin(), std::find(closure.begin(), closure.end(), t) - closure.begin());
+        }
+    World one_by_one(ex, world_options(12.0));
+    const TileMaker maker(ex, world_options(12.0));
+    for (const int threads : {1, 2}) {
+        const std::map<TileCoord, Arrangement> tiles = make_tiles(maker, wanted, threads);
+        EXPECT_EQ(tiles.size(), closure.size());
+        for (const TileCoord& t : closure) EXPECT_EQ(tile_to_json(tiles.at(t)), tile_to_json(one_by_one.tile(t))) << t.describe();
+    }
+    int calls = 0;
+    EXPECT_THROW(make_tiles(maker, wanted, 1, [&](const ProgressEvent& e) { EXPECT_EQ(e.stage, "tile"); return ++calls < 3; }),
+                 Cancelled);
+    EXPECT_EQ(calls, 3);
+}
+
 class WorldCache : public test::TempDirTest {};
 
 TEST_F(WorldCache, TilesReadBackFromTheCacheAreTheTilesMade) {
