@@ -58,6 +58,7 @@ void run_world(WorldArgs& args) {
     const tessera::TileMaker maker = status.step("indexing the exemplar", [&] {
         return with_flag_names(world_flags, [&] { return tessera::TileMaker(exemplar, world); });
     });
+    if (!args.merge) check_world_dir(args.output, maker);
     std::map<tessera::TileCoord, tessera::Arrangement> tiles;
     try {
         tiles = tessera::make_tiles(maker, wanted, args.options.threads,

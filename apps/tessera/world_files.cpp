@@ -1,5 +1,6 @@
 #include "world_files.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -17,7 +18,30 @@ nlohmann::json point(const tessera::Vec3& p, int dimension) {
     return a;
 }
 
+// The index.json already in `dir`, or null; a file that is not a world index is an error.
+nlohmann::json existing_index(const std::string& dir) {
+    const fs::path path = fs::path(dir) / "index.json";
+    if (!fs::exists(path)) return nullptr;
+    nlohmann::json index;
+    try {
+        index = nlohmann::json::parse(tessera::read_file(path.string()));
+    } catch (const nlohmann::json::exception&) {
+        index = nullptr;
+    }
+    if (!index.is_object() || index.value("format", "") != "tessera-world" || !index["tiles"].is_array())
+        throw tessera::Error(tessera::ErrorKind::option, "-o " + dir + ": index.json there is not a tessera world index");
+    return index;
+}
+
 }  // namespace
+
+void check_world_dir(const std::string& dir, const tessera::TileMaker& maker) {
+    const nlohmann::json index = existing_index(dir);
+    if (!index.is_null() && index.value("world", "") != tessera::content_hash(maker.fingerprint()))
+        throw tessera::Error(tessera::ErrorKind::option,
+                             "-o " + dir + ": it holds the tiles of another world (another exemplar, tile size, seed "
+                                           "or growth option); give another directory");
+}
 
 std::string tile_file_name(const tessera::TileCoord& t, int dimension) {
     std::string name = "tile_" + std::to_string(t.x) + "_" + std::to_string(t.y);
@@ -33,8 +57,11 @@ void write_world_dir(const std::string& dir, const tessera::TileMaker& maker, co
     if (error) throw tessera::Error(tessera::ErrorKind::io, "-o " + dir + ": cannot create the directory (" + error.message() + ")");
     const int dim = maker.dimension();
     const double size = maker.options().tile_size;
-    nlohmann::json tiles = nlohmann::json::array();
-    std::size_t elements = 0;
+    // Tiles listed by an earlier run into the same directory (check_world_dir: the same world)
+    // stay listed, those made again replaced (they are the same tiles).
+    std::map<std::string, nlohmann::json> listed;
+    if (const nlohmann::json before = existing_index(dir); !before.is_null())
+        for (const auto& t : before["tiles"]) listed[t.value("file", "")] = t;
     for (const tessera::TileCoord& t : wanted) {
         const tessera::Arrangement& a = made.at(t);
         const std::string file = tile_file_name(t, dim);
@@ -42,10 +69,16 @@ void write_world_dir(const std::string& dir, const tessera::TileMaker& maker, co
         const tessera::Box b = tessera::tile_box(t, size, dim);
         nlohmann::json coord = nlohmann::json::array({t.x, t.y});
         if (dim == 3) coord.push_back(t.z);
-        tiles.push_back({{"tile", coord}, {"file", file}, {"bounds", {{"lo", point(b.lo, dim)}, {"hi", point(b.hi, dim)}}},
-                         {"elements", a.elements.size()}, {"hash", tessera::tile_hash(a)}});
-        elements += a.elements.size();
+        listed[file] = {{"tile", coord}, {"file", file}, {"bounds", {{"lo", point(b.lo, dim)}, {"hi", point(b.hi, dim)}}},
+                        {"elements", a.elements.size()}, {"hash", tessera::tile_hash(a)}};
     }
+    nlohmann::json tiles = nlohmann::json::array();
+    std::size_t elements = 0;
+    for (const auto& [file, t] : listed) {
+        tiles.push_back(t);
+        elements += t.value("elements", std::size_t{0});
+    }
+    std::sort(tiles.begin(), tiles.end(), [](const nlohmann::json& a, const nlohmann::json& b) { return a["tile"] < b["tile"]; });
     const nlohmann::json index = {{"format", "tessera-world"}, {"version", 1}, {"dimension", dim},
                                   {"tile_size", size}, {"seed", maker.options().grow.seed},
                                   {"exemplar", input}, {"world", tessera::content_hash(maker.fingerprint())},

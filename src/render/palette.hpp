@@ -29,7 +29,7 @@ inline constexpr std::array<Rgb, 10> tableau10 = {{
 
 inline constexpr Rgb white{1.0f, 1.0f, 1.0f};
 inline constexpr Rgb outline_grey{0.62f, 0.62f, 0.62f};  // domain outline
-inline constexpr Rgb grid_grey{0.82f, 0.82f, 0.82f};     // a world's tile borders, behind the elements
+inline constexpr Rgb grid_line{0.70f, 0.78f, 0.90f};     // a world's tile borders (light blue), behind the elements
 
 // Colour of class (element type) `type`; the palette repeats after 10 classes.
 inline Rgb class_color(int type) { return tableau10[static_cast<size_t>(type < 0 ? 0 : type) % tableau10.size()]; }

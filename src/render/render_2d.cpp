@@ -89,8 +89,8 @@ std::string render_png_2d(const Exemplar& data, const RenderOptions& options) {
     Canvas canvas(frame.width, frame.height, white);
     if (options.grid > 0.0) {
         for (const auto& [a, b] : grid_lines(data.domain.bounds(), options.grid, 2))
-            canvas.add_capsule(frame.px(a.x), frame.py(a.y), frame.px(b.x), frame.py(b.y), 0.6);
-        canvas.composite(grid_grey);
+            canvas.add_capsule(frame.px(a.x), frame.py(a.y), frame.px(b.x), frame.py(b.y), 0.8);
+        canvas.composite(grid_line);
     }
     if (options.show_domain) draw_domain_outline(canvas, frame, data.domain);
     for (const auto& e : data.elements) {

@@ -2,6 +2,7 @@
 // neighbours of earlier phases.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "core/rng.hpp"
@@ -123,6 +124,14 @@ std::vector<Vec3> seed_centres(const TileMaker::Impl& m, const TileCoord& tile) 
     return centres;
 }
 
+// Rounded up at 4 significant digits: a tile size that is enough.
+std::string short_number(double v) {
+    char text[32];
+    const double scale = std::pow(10.0, std::floor(std::log10(v)) - 3);
+    std::snprintf(text, sizeof text, "%.4g", std::ceil(v / scale) * scale);
+    return text;
+}
+
 std::string describe_options(const WorldOptions& o) {
     std::string text = "tile_size=" + format_option_value(o.tile_size);
     for (const auto& spec : grow_option_table())
@@ -147,7 +156,7 @@ TileMaker::TileMaker(const Exemplar& exemplar, const WorldOptions& options) : im
     if (options.tile_size < m.min_tile)
         throw Error(ErrorKind::option, "tile_size: " + format_option_value(options.tile_size) +
                                            " is smaller than the neighbourhood it must hold (" +
-                                           format_option_value(m.min_tile) + " for this exemplar)");
+                                           short_number(m.min_tile) + " for this exemplar)");
     m.fingerprint = to_json(exemplar) + "\n" + describe_options(options);
 }
 

@@ -55,6 +55,20 @@ TEST_F(CliWorld, TheSameTilesForAnyThreadCountAndAsOneMergedFile) {
     EXPECT_EQ(tessera::load(path("all.csv")).elements.size(), index["elements"].get<std::size_t>());
 }
 
+TEST_F(CliWorld, MoreOfTheSameWorldJoinsItsIndexAnotherWorldIsRefused) {
+    const std::string world = "world " + q(example("poisson_disk_2d.json")) + " --tile-size 10 -q -o " + q(path("w"));
+    ASSERT_EQ(run(world + " --tiles 0:2,0:2").code, 0);
+    ASSERT_EQ(run(world + " --tiles 2:3,0:2").code, 0);
+    const nlohmann::json index = nlohmann::json::parse(read_text(path("w") + "/index.json"));
+    EXPECT_EQ(index["tiles"].size(), 6u);
+    const std::string before = read_text(path("w") + "/index.json");
+    const Result other = run(world + " --tiles 3:4,0:2 --seed 2");
+    EXPECT_EQ(other.code, 2);
+    EXPECT_NE(other.err.find("another world"), std::string::npos) << other.err;
+    EXPECT_EQ(read_text(path("w") + "/index.json"), before);
+    EXPECT_FALSE(fs::exists(path("w") + "/tile_3_0.json"));
+}
+
 TEST_F(CliWorld, BadInputIsAOneLineErrorAndWritesNothing) {
     const std::string in = q(example("two_class_2d.json")), out = " -o " + q(path("w"));
     struct Case {
