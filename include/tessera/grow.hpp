@@ -114,7 +114,10 @@ public:
     ~Grower();
     Grower(Grower&&) noexcept;
     Grower& operator=(Grower&&) noexcept;
-    Grower(const Grower&) = delete;
+    // A copy with its own arrangement and state: far cheaper than indexing the exemplar again
+    // (a world copies one indexed Grower for every tile). Copying from a Grower that other
+    // threads only copy from too is safe.
+    Grower(const Grower& other);
     Grower& operator=(const Grower&) = delete;
 
     // Starts from a copy of an exemplar patch centred at `center` (its elements are the first

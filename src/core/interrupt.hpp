@@ -19,6 +19,11 @@ class Interrupt {
 public:
     Interrupt() = default;
     explicit Interrupt(std::function<void()> poll) : poll_(std::move(poll)) {}
+    // A copy polls the same function and starts not stopped; an owner that is copied with
+    // it gives the copy a poll of its own (set_poll), since a poll usually reaches its owner.
+    Interrupt(const Interrupt& other) : poll_(other.poll_) {}
+    Interrupt& operator=(const Interrupt&) = delete;
+    void set_poll(std::function<void()> poll) { poll_ = std::move(poll); }
 
     void check(int thread) const {
         if (stopped_.load(std::memory_order_relaxed)) throw Cancelled();

@@ -123,9 +123,13 @@ struct Grower::Impl {
     ProgressEvent last_event;  // the last event sent, sent again by the interrupt's polls
     // Polled inside a round's long loops (core/interrupt.hpp): a cancel takes effect within
     // about 0.1 s, not only between rounds (a round of a large 3D growth takes most of a second).
-    core::Interrupt interrupt{[this] {
-        if (progress && !progress(last_event)) throw Cancelled();
-    }};
+    core::Interrupt interrupt{poll()};
+    // The interrupt's poll: this Impl's progress, re-sent (a copied Impl gets its own).
+    std::function<void()> poll() {
+        return [this] {
+            if (progress && !progress(last_event)) throw Cancelled();
+        };
+    }
     GrowReport last_report;  // of the last call, kept up to date round by round
     std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
     mutable Arrangement view;  // arrangement(), rebuilt when `dirty`

@@ -105,6 +105,9 @@ Grower::Grower(const Exemplar& exemplar, const GrowOptions& options)
     : impl_(std::make_unique<Impl>(exemplar, options)) {}
 Grower::~Grower() = default;
 Grower::Grower(Grower&&) noexcept = default;
+Grower::Grower(const Grower& other) : impl_(std::make_unique<Impl>(*other.impl_)) {
+    impl_->interrupt.set_poll(impl_->poll());
+}
 Grower& Grower::operator=(Grower&&) noexcept = default;
 
 void Grower::set_progress(Progress progress) {

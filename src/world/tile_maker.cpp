@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
 
 #include "core/rng.hpp"
@@ -22,6 +23,7 @@ struct TileMaker::Impl {
     double margin = 0.0;       // neighbours' elements within it are locked next to a tile
     double min_tile = 0.0;
     std::string fingerprint;
+    std::optional<Grower> indexed;  // the exemplar indexed once; each tile grows a copy of it
 };
 
 namespace {
@@ -145,10 +147,10 @@ TileMaker::TileMaker(const Exemplar& exemplar, const WorldOptions& options) : im
     Impl& m = *impl_;
     if (!(options.tile_size > 0.0) || !std::isfinite(options.tile_size))
         throw Error(ErrorKind::option, "tile_size: must be a number > 0, got " + format_option_value(options.tile_size));
-    const Grower probe(exemplar, options.grow);  // validates the exemplar and the growth options
+    m.indexed.emplace(exemplar, options.grow);  // validates the exemplar and the growth options
     m.exemplar = exemplar;
     m.options = options;
-    m.radius = probe.radius();
+    m.radius = m.indexed->radius();
     const double patch = options.grow.choice == GrowChoice::patch ? options.grow.patch_extent : 1.0;
     m.patch_radius = patch * m.radius;
     m.margin = m.patch_radius + m.radius + 2.0 * element_extent(exemplar);
@@ -178,7 +180,7 @@ Arrangement TileMaker::make(const TileCoord& tile, const std::vector<NeighbourTi
     if (dim == 2 && tile.z != 0)
         throw Error(ErrorKind::input, "tile " + tile.describe() + ": a 2D world's tiles have z = 0");
     const Arrangement locked = locked_surroundings(m, tile, neighbours);
-    Grower grower(m.exemplar, m.options.grow);
+    Grower grower(*m.indexed);
     if (locked.elements.empty())
         grower.seed(seed_centres(m, tile));
     else
