@@ -30,6 +30,7 @@ from . import _options, _tessera
 from ._tessera import Arrangement, Domain, Exemplar, PcfModel
 from .errors import (Cancelled, DomainError, FileError, InputError, InternalError, OptionError,
                      TesseraError)
+from . import world  # tessera.world: unbounded worlds of deterministic tiles
 
 __version__ = _tessera.version
 __all__ = [
