@@ -21,8 +21,13 @@ struct WorldArgs {
     std::string gltf_instancing = "gpu";
     double tile_size = 0.0;
     bool merge = false, quiet = false;
+    std::string method = "grow";
     tessera::GrowOptions options;
-    OptionFlags flags;  // GrowOptions as flags, from the table (tessera/option_table.hpp)
+    tessera::PcfSynthOptions pcf;
+    // The methods' options as flags, from their tables (tessera/option_table.hpp).
+    MethodOptions grow_options = method_options("grow", tessera::grow_option_table());
+    MethodOptions pcf_options = method_options("pcf", tessera::pcf_option_table());
+    OptionFlags flags;
 };
 
 const FlagNames world_flags = {{"tile_size", "--tile-size"}, {"threads", "--threads"}};
@@ -38,14 +43,22 @@ void write_preview(const tessera::Arrangement& merged, double tile_size, const s
 void run_world(WorldArgs& args) {
     StatusPrinter status("world", args.quiet, std::cerr);
     std::optional<InterruptScope> interrupt_scope(std::in_place);
-    args.flags.apply(tessera::grow_option_table(), args.options);
+    if (args.method != "grow" && args.method != "pcf")
+        fail_option("--method must be grow or pcf, got '" + args.method + "'");
+    const bool pcf = args.method == "pcf";
+    for (const std::string& flag : args.flags.given_outside(pcf ? args.pcf_options : args.grow_options))
+        fail_option(flag + " applies to --method " + (pcf ? "grow" : "pcf") + " only");
+    if (pcf)
+        args.flags.apply(tessera::pcf_option_table(), args.pcf);
+    else
+        args.flags.apply(tessera::grow_option_table(), args.options);
     if (args.merge) check_arrangement_output(args.output, "-o");
     if (!args.preview.empty()) check_output_path(args.preview, "--preview", {".png", ".svg"});
     tessera::SaveOptions save_options;
     save_options.gltf_instancing = parse_gltf_instancing_option(args.gltf_instancing);
     const tessera::Exemplar exemplar =
         status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
-    args.flags.apply(tessera::grow_option_table(), args.options, exemplar.dimension);  // --field
+    if (!pcf) args.flags.apply(tessera::grow_option_table(), args.options, exemplar.dimension);  // --field
     std::vector<TileRange> ranges;
     for (const std::string& r : args.ranges) ranges.push_back(parse_tile_range(r, exemplar.dimension, "--tiles"));
     const std::vector<tessera::TileCoord> wanted = tiles_of(ranges, "--tiles");
@@ -55,13 +68,20 @@ void run_world(WorldArgs& args) {
     world.tile_size = args.tile_size;
     world.grow = args.options;
     world.grow.threads = 1;
+    if (pcf) {
+        world.method = tessera::WorldMethod::pcf;
+        world.pcf = args.pcf;
+        world.pcf.threads = 1;
+        world.grow.seed = args.pcf.seed;  // a world's seed is its growth's (tessera/world.hpp)
+    }
+    const int threads = pcf ? args.pcf.threads : args.options.threads;
     const tessera::TileMaker maker = status.step("indexing the exemplar", [&] {
         return with_flag_names(world_flags, [&] { return tessera::TileMaker(exemplar, world); });
     });
     if (!args.merge) check_world_dir(args.output, maker);
     std::map<tessera::TileCoord, tessera::Arrangement> tiles;
     try {
-        tiles = tessera::make_tiles(maker, wanted, args.options.threads,
+        tiles = tessera::make_tiles(maker, wanted, threads,
                                     status.progress([] { return !interrupt_requested(); }));
     } catch (const tessera::Cancelled&) {
         throw tessera::Error(tessera::ErrorKind::cancelled, "interrupted; nothing was written");
@@ -114,7 +134,13 @@ Subcommand add_world_command(CLI::App& app) {
     cmd->add_option("--preview", args->preview,
                     "Also write a picture of the tiles (.png or .svg), tile borders drawn faintly.")
         ->type_name("FILE");
-    args->flags.add(*cmd, {method_options("grow", tessera::grow_option_table())});
+    cmd->add_option("--method", args->method,
+                    "grow: each tile grown by neighbourhood matching next to its neighbours (2D and 3D, any "
+                    "elements); pcf: each tile synthesized by the PCF method with its neighbours' elements fixed "
+                    "(2D, single-sample elements).")
+        ->default_str("grow")
+        ->type_name("grow|pcf");
+    args->flags.add(*cmd, {args->grow_options, args->pcf_options});
     add_gltf_instancing_option(*cmd, args->gltf_instancing);
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);

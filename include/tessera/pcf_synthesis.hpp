@@ -161,6 +161,23 @@ struct PcfSynthOptions {
 // class, Error(option) for bad options, Cancelled when progress returns false.
 Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const PcfSynthOptions& options = {},
                            const Progress& progress = {});
+// Synthesis next to elements that stay where they are (a world's tile next to its finished
+// neighbours, tessera/world.hpp): `fixed` (single-sample elements of the model's classes,
+// types in the model's order, inside `domain`) count in every PCF, and nothing moves them.
+// The new elements, the model's density times the area of `fill` (the part of `domain`
+// the fixed elements leave empty), start inside `fill` and may settle anywhere in
+// `domain`; the result holds the new elements only. Each class is synthesized after its
+// fixed elements are in, so the new ones continue their pattern. Error(input) naming the
+// element for a fixed element of another class, with several samples or outside the domain.
+Arrangement synthesize_pcf_next_to(const PcfModel& model, const Domain& domain, const Exemplar& fixed,
+                                   const Domain& fill, const PcfSynthOptions& options = {},
+                                   const Progress& progress = {});
+// The same from the model's exemplar, then its passes (relaxation, holes, crowding repair,
+// as synthesize_pcf from an exemplar runs them) over the fixed and the new elements
+// together, the fixed ones never moving; returns the new elements, with the exemplar's types.
+Arrangement synthesize_pcf_next_to(const Exemplar& exemplar, const PcfModel& model, const Domain& domain,
+                                   const Exemplar& fixed, const Domain& fill, const PcfSynthOptions& options = {},
+                                   const Progress& progress = {});
 // analyze_distribution(exemplar, options.analysis) + synthesize_pcf.
 Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const PcfSynthOptions& options = {},
                            const Progress& progress = {});

@@ -26,6 +26,7 @@
 
 #include "tessera/exemplar.hpp"
 #include "tessera/grow.hpp"
+#include "tessera/pcf_synthesis.hpp"
 
 namespace tessera {
 
@@ -41,9 +42,16 @@ struct NeighbourTile {
     const Arrangement* tile = nullptr;
 };
 
+// How a tile is made next to its finished neighbours: grown by neighbourhood matching
+// (tessera/grow.hpp) or synthesized by the PCF method with the neighbours' elements fixed
+// (synthesize_pcf_next_to, tessera/pcf_synthesis.hpp; 2D, single-sample elements).
+enum class WorldMethod { grow, pcf };
+
 struct WorldOptions {
     double tile_size = 0.0;  // edge of a tile, > 0 and at least TileMaker::min_tile_size()
+    WorldMethod method = WorldMethod::grow;
     GrowOptions grow;        // how each tile grows (seed, threads and every growth option)
+    PcfSynthOptions pcf;     // method pcf: how each tile is synthesized (its seed is grow.seed)
 };
 
 // 0..3 in 2D, 0..7 in 3D (see above).

@@ -113,7 +113,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
                       const std::function<void()>& tick) {
     InitReport report;
     if (elements.empty()) return report;
-    const Box b = s.domain.bounds();
+    const Box b = s.fill->bounds();
     const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
     const core::KeyedRng dart(st.seed, core::Purpose::pcf_dart, static_cast<std::uint64_t>(c),
                               static_cast<std::uint64_t>(st.round));
@@ -126,7 +126,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
         for (int miss = 0; miss < 1000000; ++miss) {
             const std::uint64_t a = attempt++;
             p = {b.lo.x + w * dart.uniform(2 * a), b.lo.y + h * dart.uniform(2 * a + 1), 0.0};
-            if (s.domain.inside(p)) return true;
+            if (s.fill->inside(p)) return true;
         }
         return false;
     };
@@ -173,7 +173,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
                 double best = kInfinity;
                 for (int cell = begin; cell < end; ++cell) {
                     const Vec3 p = point(cell);
-                    if (!s.domain.inside(p)) continue;
+                    if (!s.fill->inside(p)) continue;
                     error[cell] = candidate_error(s, c, p, r, fill, best, scratch[thread]);
                     best = std::min(best, error[cell]);
                 }
@@ -207,7 +207,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
                     for (int k = 0; k < kZoom * kZoom; ++k, key += 2) {
                         const Vec3 at{corner.x + (k % kZoom) * sub, corner.y + (k / kZoom) * sub, 0.0};
                         const Vec3 q{at.x + jitter.uniform(key) * sub, at.y + jitter.uniform(key + 1) * sub, 0.0};
-                        if (!s.domain.inside(q)) continue;
+                        if (!s.fill->inside(q)) continue;
                         const double E = candidate_error(s, c, q, r, fill, best, scratch[0]);
                         if (E < best) {
                             best = E;
@@ -220,7 +220,7 @@ InitReport initialise(State& s, int c, const std::vector<int>& elements, const I
                 }
             } else {
                 // No cell's point fell inside (a domain thinner than a cell): any point inside.
-                if (!draw_inside(p)) p = s.domain.closest_inside(b.lo + (b.hi - b.lo) * 0.5);
+                if (!draw_inside(p)) p = s.fill->closest_inside(b.lo + (b.hi - b.lo) * 0.5);
                 ++report.by_fallback;
             }
             s.begin_profile(p, scratch[0].profile);

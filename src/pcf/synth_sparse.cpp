@@ -28,7 +28,8 @@ double sparse_violation(const State& s, const PcfSparseClass& sc, const Vec3& p,
         if (!(x > 0.0) || s.placed(static_cast<int>(o)) == 0) continue;
         double nearest = std::numeric_limits<double>::infinity();
         double largest = 0.0;
-        for (int j : s.members[o]) largest = std::max(largest, s.elems[j].r);
+        for (const auto* list : {&s.members[o], &s.fixed[o]})
+            for (int j : *list) largest = std::max(largest, s.elems[j].r);
         const double reach = (s.model.disks ? std::max(0.0, x - 3.0) + 0.0 : x) * s.r_max + r + largest;
         s.for_each_near(static_cast<int>(o), p, std::max(reach, x * s.r_max), [&](int j) {
             nearest = std::min(nearest, s.pair(s.distance(p, s.elems[j].p), r, s.elems[j].r).x);

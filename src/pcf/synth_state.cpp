@@ -14,7 +14,8 @@ double min_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min
 
 }  // namespace
 
-State::State(const PcfModel& model_, const Domain& domain_, const std::vector<std::vector<double>>& radii)
+State::State(const PcfModel& model_, const Domain& domain_, const std::vector<std::vector<double>>& radii,
+             const std::vector<FixedElem>& fixed_elements)
     : model(model_), domain(domain_) {
     axis = make_axis(model.settings, model.disks);
     bins = axis.bins;
@@ -48,6 +49,7 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
     const int classes = static_cast<int>(model.classes.size());
     count.assign(classes, 0);
     members.assign(classes, {});
+    fixed.assign(classes, {});
     placed_.assign(classes, 0);
     for (int c = 0; c < classes; ++c) {
         count[c] = static_cast<int>(radii[c].size());
@@ -58,6 +60,15 @@ State::State(const PcfModel& model_, const Domain& domain_, const std::vector<st
             members[c].push_back(static_cast<int>(elems.size()));
             elems.push_back(e);
         }
+    }
+    for (const FixedElem& f : fixed_elements) {
+        Elem e;
+        e.p = f.p;
+        e.r = f.r;
+        e.cls = f.cls;
+        fixed[f.cls].push_back(static_cast<int>(elems.size()));
+        ++count[f.cls];
+        elems.push_back(e);
     }
     profiles.resize(elems.size());
 
@@ -258,6 +269,14 @@ void State::insert(int i, CircleProfile& profile) {
     ++placed_[e.cls];
 }
 
+void State::insert_fixed(int c) {
+    for (int i : fixed[c]) {
+        CircleProfile profile;
+        begin_profile(elems[i].p, profile);
+        insert(i, profile);
+    }
+}
+
 void State::remove(int i) {
     Elem& e = elems[i];
     auto& list = cells_[e.cls][e.cell];
@@ -314,12 +333,13 @@ std::vector<int> State::near_members(int c, const std::vector<int>& around, doub
 
 void State::rebuild_grid(int c) {
     for (auto& list : cells_[c]) list.clear();
-    for (int i : members[c]) {
-        Elem& e = elems[i];
-        if (!e.placed) continue;
-        e.cell = cell_of(e.p);
-        cells_[c][e.cell].push_back({i, e.p.x, e.p.y});
-    }
+    for (const auto* list : {&fixed[c], &members[c]})
+        for (int i : *list) {
+            Elem& e = elems[i];
+            if (!e.placed) continue;
+            e.cell = cell_of(e.p);
+            cells_[c][e.cell].push_back({i, e.p.x, e.p.y});
+        }
 }
 
 void State::refresh(int t) {

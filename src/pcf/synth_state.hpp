@@ -96,13 +96,27 @@ struct Separation {
     double reach = 0.0;
 };
 
+// An element that stays where it is (synthesis next to a world's finished tiles): it counts
+// toward its class's count and every PCF sum but is in no `members` list, so nothing moves it.
+struct FixedElem {
+    int cls = 0;
+    Vec3 p;
+    double r = 0.0;
+};
+
 class State {
 public:
-    // elements: the output's radii per class (all unplaced).
-    State(const PcfModel& model, const Domain& domain, const std::vector<std::vector<double>>& radii);
+    // elements: the output's radii per class (all unplaced); fixed: elements inside the
+    // domain that stay put, inserted class by class by insert_fixed.
+    State(const PcfModel& model, const Domain& domain, const std::vector<std::vector<double>>& radii,
+          const std::vector<FixedElem>& fixed = {});
 
     const PcfModel& model;
     const Domain& domain;
+    // Where initialisation places new elements: the domain, or the part of it that the
+    // fixed elements leave to fill (a world's tile inside the margins of its neighbours).
+    // Refinement may move them anywhere in the domain.
+    const Domain* fill = &domain;
     Axis axis;
     int bins = 0;
     double r_max = 0.0, area = 0.0, x_limit = 0.0;
@@ -113,6 +127,7 @@ public:
     std::vector<Elem> elems;
     std::vector<CircleProfile> profiles;        // per element (placed ones)
     std::vector<std::vector<int>> members;      // per class: its element indices (largest radius first)
+    std::vector<std::vector<int>> fixed;        // per class: the indices of its fixed elements
     std::vector<std::vector<Separation>> separations;  // per class: the classes it must stay apart from
     // A separation violation of dx on the normalised axis counts as dx / (kFloor sigma) in
     // the candidate error: a tenth of a kernel width inside weighs as much as a pair where
@@ -208,6 +223,10 @@ public:
     void insert(int i, CircleProfile& profile);
     // Takes a placed element out again.
     void remove(int i);
+    // Places class c's fixed elements. Called just before the class is synthesized, when its
+    // parents are complete: a pair counts in the sum of its reference's class when the
+    // reference is inserted, so a fixed child inserted earlier would miss later parents.
+    void insert_fixed(int c);
     // Some elements' positions and profiles and their class's PCF sums, to undo changes
     // to those elements (a copy of the elements moved, not of the whole class: a local
     // refinement must not cost the class's size per sweep).

@@ -145,10 +145,43 @@ std::string sparse_note(const PcfModel& m, const PcfSparseClass& sc, int placed)
     return note + " (its PCFs and its children's PCFs on it were not used)";
 }
 
+// The fixed elements of synthesize_pcf_next_to, checked: the model's classes, single
+// samples, inside the domain.
+std::vector<pcf::FixedElem> fixed_elements(const PcfModel& model, const Domain& domain, const Exemplar& fixed) {
+    std::vector<pcf::FixedElem> out;
+    for (const Element& e : fixed.elements) {
+        if (e.type < 0 || e.type >= static_cast<int>(model.classes.size()) ||
+            fixed.types[e.type].name != model.classes[e.type])
+            throw Error(ErrorKind::input, "fixed element " + std::to_string(e.id) + ": its type is not the model's class " +
+                                              std::to_string(e.type));
+        if (e.sample_count != 1) throw Error(ErrorKind::input, "fixed element " + std::to_string(e.id) + ": the PCF method's elements have one sample");
+        if (!domain.inside(e.position))
+            throw Error(ErrorKind::input, "fixed element " + std::to_string(e.id) + " lies outside the output domain");
+        out.push_back({e.type, e.position, e.radius});
+    }
+    return out;
+}
+
+Arrangement synthesize(const PcfModel& model, const Domain& domain, const std::vector<pcf::FixedElem>& fixed,
+                       const Domain& fill, const PcfSynthOptions& options, const Progress& progress);
+
 }  // namespace
 
 Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const PcfSynthOptions& options,
                            const Progress& progress) {
+    return synthesize(model, domain, {}, domain, options, progress);
+}
+
+Arrangement synthesize_pcf_next_to(const PcfModel& model, const Domain& domain, const Exemplar& fixed,
+                                   const Domain& fill, const PcfSynthOptions& options, const Progress& progress) {
+    check_model(model);
+    return synthesize(model, domain, fixed_elements(model, domain, fixed), fill, options, progress);
+}
+
+namespace {
+
+Arrangement synthesize(const PcfModel& model, const Domain& domain, const std::vector<pcf::FixedElem>& fixed,
+                       const Domain& fill, const PcfSynthOptions& options, const Progress& progress) {
     const auto t0 = Clock::now();
     check_options(options);
     check_model(model);
@@ -157,13 +190,14 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     const int threads = core::resolve_threads(options.threads);
     const int classes = static_cast<int>(model.classes.size());
 
-    // Counts = the exemplar's density x the output area, per class.
-    const double area = domain.measure();
+    // Counts = the exemplar's density x the area to fill, per class (the whole domain, or
+    // the part the fixed elements leave: they already stand at that density in theirs).
+    const double area = fill.measure();
     std::vector<std::vector<double>> radii(classes);
     for (int c = 0; c < classes; ++c) {
         const double expected = model.counts[c] / model.area * area;
         const int n = static_cast<int>(std::lround(expected));
-        if (model.counts[c] > 0 && n < 1)
+        if (model.counts[c] > 0 && n < 1 && fixed.empty())
             throw Error(ErrorKind::domain, "the output domain " + domain.describe() + " (area " + format(area) +
                                                ") is too small for one element of class '" + model.classes[c] +
                                                "' (" + format(expected) + " expected)");
@@ -177,7 +211,8 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     stats.threads = threads;
     stats.radius = model.r_max;
 
-    pcf::State state(model, domain, radii);
+    pcf::State state(model, domain, radii, fixed);
+    state.fill = &fill;
     pcf::InitSettings init;
     init.seed = options.seed;
     init.threads = threads;
@@ -254,6 +289,7 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     for (int c : model.order) {
         class_sweeps = 0;
         report(progress, {"init", -1, planned, 0.0, seconds_since(t0), share_done()});
+        state.insert_fixed(c);
         const std::vector<int>& members = state.members[c];
         if (const PcfSparseClass* sparse = pcf::sparse_class(model, c)) {
             run_sparse(*sparse, members);
@@ -352,5 +388,7 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
     report(progress, {"done", sweep_index, planned, final_energy, stats.total_seconds, 1.0});
     return out;
 }
+
+}  // namespace
 
 }  // namespace tessera

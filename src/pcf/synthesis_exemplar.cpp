@@ -44,4 +44,33 @@ Arrangement synthesize_pcf(const Exemplar& exemplar, const Domain& domain, const
     return out;
 }
 
+Arrangement synthesize_pcf_next_to(const Exemplar& exemplar, const PcfModel& model, const Domain& domain,
+                                   const Exemplar& fixed, const Domain& fill, const PcfSynthOptions& options,
+                                   const Progress& progress) {
+    const Arrangement fresh = synthesize_pcf_next_to(model, domain, fixed, fill, options, progress);
+    // The exemplar-level passes see the fixed elements (locked: they never move) next to
+    // the new ones, so that the relaxation, the hole filling and the crowding repair
+    // measure the neighbourhoods the user will see across the fixed elements' border.
+    Arrangement both = fresh;
+    for (ElementType& type : both.types)
+        if (const int t = exemplar.find_type(type.name); t >= 0) {
+            const auto depends_on = type.depends_on;
+            type = exemplar.types[t];
+            type.depends_on = depends_on;
+        }
+    both.elements.clear();
+    both.samples.clear();
+    for (const Element& e : fixed.elements) both.elements[both.add_element(e.type, {e.position}, e.radius)].locked = true;
+    for (const Element& e : fresh.elements) both.add_element(e.type, {e.position}, e.radius);
+    pcf::relax_output(exemplar, domain, options, both);
+    pcf::close_holes(exemplar, domain, options, both);
+    pcf::repair_output(exemplar, domain, options, both);
+    Arrangement out = both;
+    out.elements.clear();
+    out.samples.clear();
+    for (const Element& e : both.elements)
+        if (!e.locked) out.add_element(e.type, {e.position}, e.radius);
+    return out;
+}
+
 }  // namespace tessera

@@ -9,6 +9,7 @@
 #include "core/rng.hpp"
 #include "tessera/error.hpp"
 #include "world/append_element.hpp"
+#include "world/pcf_tile_domain.hpp"
 #include "tessera/io.hpp"
 #include "tessera/option_table.hpp"
 #include "tessera/world.hpp"
@@ -23,7 +24,8 @@ struct TileMaker::Impl {
     double margin = 0.0;       // neighbours' elements within it are locked next to a tile
     double min_tile = 0.0;
     std::string fingerprint;
-    std::optional<Grower> indexed;  // the exemplar indexed once; each tile grows a copy of it
+    std::optional<Grower> indexed;  // method grow: the exemplar indexed once; each tile grows a copy
+    std::optional<PcfModel> model;  // method pcf: the exemplar analysed once
 };
 
 namespace {
@@ -136,9 +138,48 @@ std::string short_number(double v) {
 
 std::string describe_options(const WorldOptions& o) {
     std::string text = "tile_size=" + format_option_value(o.tile_size);
+    if (o.method == WorldMethod::pcf) {
+        text += ";method=pcf;seed=" + std::to_string(o.grow.seed);
+        for (const auto& spec : pcf_option_table())
+            if (spec.name != "threads" && spec.name != "seed") text += ";" + spec.name + "=" + format_option_value(spec.get(o.pcf));
+        return text;
+    }
     for (const auto& spec : grow_option_table())
         if (spec.name != "threads") text += ";" + spec.name + "=" + format_option_value(spec.get(o.grow));
     return text;
+}
+
+// The PCF method's reach: pairs further apart than the end of the PCF axis (extent plus a
+// kernel width, in r_max, beyond contact for disks) do not count, so neighbours' elements
+// beyond it do not change a tile.
+double pcf_reach(const PcfModel& model) {
+    double largest = 0.0;
+    for (const auto& radii : model.radii)
+        if (!radii.empty()) largest = std::max(largest, radii.front());
+    return model.r_max * (model.settings.extent + 2.0 * model.settings.sigma) + 2.0 * largest;
+}
+
+// The seed of one tile's PCF synthesis: the world's seed and the tile's coordinates.
+std::uint64_t tile_seed(std::uint64_t seed, const TileCoord& t) {
+    const core::KeyedRng rng(seed, core::Purpose::world_seed, static_cast<std::uint64_t>(t.x) ^ 0x5bd1e995ull,
+                             static_cast<std::uint64_t>(t.y) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(t.z));
+    return rng.bits(0);
+}
+
+// Method pcf: the tile synthesized next to its neighbours' elements within the margin, in
+// the tile and the neighbours' strips (pcf_tile_domain.hpp), new elements starting in the
+// tile.
+Arrangement pcf_tile(const TileMaker::Impl& m, const TileCoord& tile, const Arrangement& locked,
+                     const Progress& progress) {
+    const Domain domain = world::pcf_tile_domain(tile, m.options.tile_size, m.margin);
+    Exemplar fixed = locked;
+    fixed.elements.clear();
+    for (const Element& e : locked.elements)
+        if (domain.inside(e.position)) world::append_element(locked, e, fixed, true);
+    const Box box = tile_box(tile, m.options.tile_size, 2);
+    PcfSynthOptions o = m.options.pcf;
+    o.seed = tile_seed(m.options.grow.seed, tile);
+    return synthesize_pcf_next_to(m.exemplar, *m.model, domain, fixed, Domain::box(box.lo, box.hi, 2), o, progress);
 }
 
 }  // namespace
@@ -147,13 +188,21 @@ TileMaker::TileMaker(const Exemplar& exemplar, const WorldOptions& options) : im
     Impl& m = *impl_;
     if (!(options.tile_size > 0.0) || !std::isfinite(options.tile_size))
         throw Error(ErrorKind::option, "tile_size: must be a number > 0, got " + format_option_value(options.tile_size));
-    m.indexed.emplace(exemplar, options.grow);  // validates the exemplar and the growth options
     m.exemplar = exemplar;
     m.options = options;
-    m.radius = m.indexed->radius();
-    const double patch = options.grow.choice == GrowChoice::patch ? options.grow.patch_extent : 1.0;
-    m.patch_radius = patch * m.radius;
-    m.margin = m.patch_radius + m.radius + 2.0 * element_extent(exemplar);
+    if (options.method == WorldMethod::pcf) {
+        if (exemplar.dimension != 2)
+            throw Error(ErrorKind::option, "method: the PCF method makes 2D worlds; this exemplar is 3D (use grow)");
+        check_options(pcf_option_table(), options.pcf);
+        m.model = analyze_distribution(exemplar, options.pcf.analysis, options.pcf.threads);
+        m.margin = pcf_reach(*m.model);
+    } else {
+        m.indexed.emplace(exemplar, options.grow);  // validates the exemplar and the growth options
+        m.radius = m.indexed->radius();
+        const double patch = options.grow.choice == GrowChoice::patch ? options.grow.patch_extent : 1.0;
+        m.patch_radius = patch * m.radius;
+        m.margin = m.patch_radius + m.radius + 2.0 * element_extent(exemplar);
+    }
     m.min_tile = m.margin;
     if (options.tile_size < m.min_tile)
         throw Error(ErrorKind::option, "tile_size: " + format_option_value(options.tile_size) +
@@ -180,6 +229,7 @@ Arrangement TileMaker::make(const TileCoord& tile, const std::vector<NeighbourTi
     if (dim == 2 && tile.z != 0)
         throw Error(ErrorKind::input, "tile " + tile.describe() + ": a 2D world's tiles have z = 0");
     const Arrangement locked = locked_surroundings(m, tile, neighbours);
+    if (m.model) return own_elements(m, tile, pcf_tile(m, tile, locked, progress));
     Grower grower(*m.indexed);
     if (locked.elements.empty())
         grower.seed(seed_centres(m, tile));

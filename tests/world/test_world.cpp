@@ -312,3 +312,62 @@ TEST(World, BadInputIsAClearError) {
               std::string::npos);
     EXPECT_NE(message([&] { maker.make({0, 0, 1}, {}); }).find("z = 0"), std::string::npos);
 }
+
+// ---- tiles made by the PCF method -------------------------------------------------------
+
+static WorldOptions pcf_world_options(double tile_size, int threads = 1) {
+    WorldOptions o = world_options(tile_size);
+    o.method = WorldMethod::pcf;
+    o.pcf.threads = threads;
+    return o;
+}
+
+TEST(WorldPcf, TilesKeepTheDensityAndThePairCorrelationAcrossBorders) {
+    const Exemplar ex = example("poisson_disk_2d");
+    const double size = 12.0, half = 4.0;
+    World w(ex, pcf_world_options(size));
+    const Arrangement all = merged(w, block(3));
+    const double expected = ex.elements.size() / ex.domain.measure() * 9 * size * size;
+    EXPECT_NEAR(all.elements.size(), expected, 0.06 * expected);
+    double corner_error = 0.0, inside_error = 0.0;
+    for (int i = 1; i < 3; ++i)
+        for (int j = 1; j < 3; ++j) {
+            const Vec3 c{i * size, j * size, 0};
+            corner_error += pcf_relative_error(ex, window(all, c - Vec3{half, half, 0}, c + Vec3{half, half, 0})) / 4;
+        }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const Vec3 m{(i + 0.5) * size, (j + 0.5) * size, 0};
+            inside_error += pcf_relative_error(ex, window(all, m - Vec3{half, half, 0}, m + Vec3{half, half, 0})) / 9;
+        }
+    EXPECT_LE(corner_error, 1.25 * inside_error + 0.01) << "corners " << corner_error << ", inside " << inside_error;
+    const double closest = nearest_neighbor_distances(ex).min;
+    double across = 1e300;
+    for (size_t a = 0; a < all.elements.size(); ++a)
+        for (size_t b = a + 1; b < all.elements.size(); ++b) {
+            const Vec3 pa = all.elements[a].position, pb = all.elements[b].position;
+            if (tile_at(pa, size, 2) != tile_at(pb, size, 2)) across = std::min(across, norm(pa - pb));
+        }
+    EXPECT_GE(across, 0.95 * closest) << "closest pair across a border " << across << ", exemplar " << closest;
+    test::expect_no_crowding(ex, all, "PCF Poisson disks over 3 x 3 tiles");
+}
+
+TEST(WorldPcf, ATileIsTheSameWhateverTheOrderAndTheThreads) {
+    const Exemplar ex = example("poisson_disk_2d");
+    World in_order(ex, pcf_world_options(10.0, 1));
+    World shuffled(ex, pcf_world_options(10.0, 2));
+    std::vector<TileCoord> tiles = block(3);
+    const auto reference = texts(in_order, tiles);
+    std::shuffle(tiles.begin(), tiles.end(), std::mt19937(11));
+    for (const TileCoord& t : tiles) EXPECT_EQ(tile_to_json(shuffled.tile(t)), reference.at(t)) << t.describe();
+}
+
+TEST(WorldPcf, ThreeDimensionalExemplarsAreRefused) {
+    try {
+        TileMaker(example("spheres_3d"), pcf_world_options(10.0));
+        FAIL() << "a 3D PCF world was accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::option);
+        EXPECT_NE(std::string(e.what()).find("method: the PCF method makes 2D worlds"), std::string::npos) << e.what();
+    }
+}
