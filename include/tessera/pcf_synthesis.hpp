@@ -165,8 +165,8 @@ Arrangement synthesize_pcf(const PcfModel& model, const Domain& domain, const Pc
 // neighbours, tessera/world.hpp): `fixed` (single-sample elements of the model's classes,
 // types in the model's order, inside `domain`) count in every PCF, and nothing moves them.
 // The new elements, the model's density times the area of `fill` (the part of `domain`
-// the fixed elements leave empty), start inside `fill` and may settle anywhere in
-// `domain`; the result holds the new elements only. Each class is synthesized after its
+// the fixed elements leave empty), are placed and stay inside `fill`; the result holds
+// the new elements only. Each class is synthesized after its
 // fixed elements are in, so the new ones continue their pattern. Error(input) naming the
 // element for a fixed element of another class, with several samples or outside the domain.
 Arrangement synthesize_pcf_next_to(const PcfModel& model, const Domain& domain, const Exemplar& fixed,

@@ -210,15 +210,15 @@ double refine_element(State& s, int i, double* local, RefineScratch& sc) {
     const Vec3 direction = gradient * (-1.0 / length);
 
     // The trial moves; the single best one is kept. Each trial gets the boundary
-    // correction at its position; a trial that leaves the domain or rises above the
-    // envelopes is not a candidate.
+    // correction at its position; a trial that leaves the region to fill (the domain,
+    // unless fixed elements hold part of it) or rises above the envelopes is not a candidate.
     constexpr int kSteps = static_cast<int>(std::size(kTrialSteps));
     double best_change = 0.0, best_step = 0.0;
     int best_index = -1;
     const auto trial = [&](int index) {
         const double step = kTrialSteps[index];
         const Vec3 q = e.p + direction * (step * s.r_max);
-        if (!s.domain.inside(q)) return kInfinity;
+        if (!s.fill->inside(q)) return kInfinity;
         if (s.separation_violation(e.cls, q, e.r) > separation_limit) return kInfinity;
         s.begin_profile(q, sc.profile);
         const double excess = pairs_at(s, e.cls, q, e.r, sc.profile, sc, sc.trial, sc.trial_lo, sc.trial_hi);

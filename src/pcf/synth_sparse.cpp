@@ -45,7 +45,7 @@ double sparse_violation(const State& s, const PcfSparseClass& sc, const Vec3& p,
 SparseReport place_sparse(State& s, const PcfSparseClass& sc, const std::vector<int>& elements, std::uint64_t seed,
                           const std::function<void()>& tick) {
     SparseReport report;
-    const Box b = s.domain.bounds();
+    const Box b = s.fill->bounds();
     const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
     const core::KeyedRng dart(seed, core::Purpose::pcf_dart, static_cast<std::uint64_t>(sc.cls), 1ull << 40);
     std::uint64_t attempt = 0;
@@ -53,10 +53,10 @@ SparseReport place_sparse(State& s, const PcfSparseClass& sc, const std::vector<
     for (int i : elements) {
         const double r = s.elems[i].r;
         double best = std::numeric_limits<double>::infinity();
-        Vec3 best_p = s.domain.closest_inside(b.lo + (b.hi - b.lo) * 0.5);
+        Vec3 best_p = s.fill->closest_inside(b.lo + (b.hi - b.lo) * 0.5);
         for (std::uint64_t k = 0; k < kSparseDarts && best > 0.0; ++k, ++attempt) {
             const Vec3 p{b.lo.x + w * dart.uniform(2 * attempt), b.lo.y + h * dart.uniform(2 * attempt + 1), 0.0};
-            if (!s.domain.inside(p)) continue;
+            if (!s.fill->inside(p)) continue;
             const double v = sparse_violation(s, sc, p, r);
             if (v < best) {
                 best = v;

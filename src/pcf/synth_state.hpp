@@ -113,9 +113,9 @@ public:
 
     const PcfModel& model;
     const Domain& domain;
-    // Where initialisation places new elements: the domain, or the part of it that the
-    // fixed elements leave to fill (a world's tile inside the margins of its neighbours).
-    // Refinement may move them anywhere in the domain.
+    // Where new elements are placed and may move: the domain, or the part of it that the
+    // fixed elements leave to fill (a world's tile inside the margins of its neighbours),
+    // so that none drifts into the fixed elements' part, where it would be lost.
     const Domain* fill = &domain;
     Axis axis;
     int bins = 0;

@@ -62,9 +62,11 @@ Arrangement synthesize_pcf_next_to(const Exemplar& exemplar, const PcfModel& mod
     both.samples.clear();
     for (const Element& e : fixed.elements) both.elements[both.add_element(e.type, {e.position}, e.radius)].locked = true;
     for (const Element& e : fresh.elements) both.add_element(e.type, {e.position}, e.radius);
-    pcf::relax_output(exemplar, domain, options, both);
-    pcf::close_holes(exemplar, domain, options, both);
-    pcf::repair_output(exemplar, domain, options, both);
+    // Their domain is the region to fill: they move new elements only within it, and look
+    // for holes only there (the fixed elements' part is theirs to answer for).
+    pcf::relax_output(exemplar, fill, options, both);
+    pcf::close_holes(exemplar, fill, options, both);
+    pcf::repair_output(exemplar, fill, options, both);
     Arrangement out = both;
     out.elements.clear();
     out.samples.clear();

@@ -328,7 +328,7 @@ TEST(WorldPcf, TilesKeepTheDensityAndThePairCorrelationAcrossBorders) {
     World w(ex, pcf_world_options(size));
     const Arrangement all = merged(w, block(3));
     const double expected = ex.elements.size() / ex.domain.measure() * 9 * size * size;
-    EXPECT_NEAR(all.elements.size(), expected, 0.06 * expected);
+    EXPECT_NEAR(all.elements.size(), expected, 0.03 * expected);
     double corner_error = 0.0, inside_error = 0.0;
     for (int i = 1; i < 3; ++i)
         for (int j = 1; j < 3; ++j) {
