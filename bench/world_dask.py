@@ -40,7 +40,7 @@ def main():
             per_tile = seconds / built.made
             first = first or per_tile
             print("| B7-dask %dx%d | %d | %d | %d | %.2f | %.0f | %.0f | %.2f |" % (
-                n, n, len(built), built.made, elements, seconds, built.made / seconds, elements / seconds,
+                n, n, len(built), built.made, elements, seconds, len(built) / seconds, elements / seconds,
                 per_tile / first))
         print()
         print("LocalCluster of 2 worker processes started in %.1f s (not in the times)." % startup)
