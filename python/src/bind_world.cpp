@@ -96,7 +96,25 @@ tessera::WorldOptions world_options(const tessera::Exemplar& exemplar, const py:
         bad("tile_size must be a number, got " + std::string(py::repr(tile_size)));
     tessera::WorldOptions o;
     o.tile_size = number(tile_size, "tile_size");
-    apply_keywords(tessera::grow_option_table(), o.grow, options, exemplar.dimension, owner);
+    // "method" picks the table the other keywords belong to (tessera.world checked that
+    // none of the other method's is set).
+    std::string method = "grow";
+    py::dict rest;
+    for (const auto& [key, value] : options) {
+        if (py::str(key).cast<std::string>() != "method")
+            rest[key] = value;
+        else if (!value.is_none())
+            method = py::str(value);
+    }
+    if (method == "pcf") {
+        o.method = tessera::WorldMethod::pcf;
+        apply_keywords(tessera::pcf_option_table(), o.pcf, rest, exemplar.dimension, owner + " method 'pcf'");
+        o.grow.seed = o.pcf.seed;  // a world's seed is WorldOptions::grow.seed (tessera/world.hpp)
+    } else if (method == "grow") {
+        apply_keywords(tessera::grow_option_table(), o.grow, rest, exemplar.dimension, owner);
+    } else {
+        bad("method must be 'grow' or 'pcf', got '" + method + "'");
+    }
     return o;
 }
 

@@ -31,6 +31,12 @@ __all__ = ["ClusterUnavailable", "TileMaker", "World", "WorldTiles", "build", "b
            "from_compact", "merge", "tile_hash", "tile_json", "to_compact"]
 
 
+# How tiles are made: grown by neighbourhood matching (tessera.Grower's keywords) or
+# synthesized by the PCF method next to their neighbours' fixed elements (the keywords of
+# tessera.synthesize(method="pcf"); 2D, single-sample elements).
+_METHODS = ("grow", "pcf")
+
+
 class ClusterUnavailable(TesseraError, ConnectionError):
     """No Dask scheduler answers at the address given, or it has no worker, within the
     timeout; the message names the address."""
@@ -90,8 +96,13 @@ class TileMaker(_tessera.TileMaker):
     exemplar   an Exemplar or a path to one.
     tile_size  the edge of a tile, at least min_tile_size (the neighbourhood the growth needs;
                the OptionError naming tile_size says how much for this exemplar).
-    options    the growth's keywords (those of tessera.Grower, listed below); threads is the
-               thread count of each tile's growth and changes no tile.
+    method     "grow" (default): tiles grown by neighbourhood matching, 2D and 3D, with the
+               keywords of tessera.Grower; "pcf": tiles synthesized by the PCF method next to
+               their neighbours' fixed elements (2D, single-sample elements), with the keywords
+               of tessera.synthesize(method="pcf"). An option of the other method is an
+               OptionError.
+    options    the method's keywords (listed below); threads is the thread count of each
+               tile and changes no tile.
 
     make(coord, neighbours=None) returns the tile (compact form) grown next to `neighbours`,
     the finished tiles of dependencies(coord) as {coord: tile} or (coord, tile) pairs
@@ -100,11 +111,10 @@ class TileMaker(_tessera.TileMaker):
     the world. make() releases the GIL and may run on several threads at once.
     """
 
-    def __init__(self, exemplar, tile_size, **options):
-        _options.check_keywords("TileMaker", options, ("grow",))
-        super().__init__(_as_exemplar(exemplar), tile_size, options)
+    def __init__(self, exemplar, tile_size, method="grow", **options):
+        super().__init__(_as_exemplar(exemplar), tile_size, _method_options("TileMaker", method, options))
 
-    _options.with_signature(__init__, ("self", "exemplar", "tile_size"), ("grow",))
+    _options.with_signature(__init__, ("self", "exemplar", "tile_size", "method"), _METHODS)
 
 
 class World(_tessera.World):
@@ -121,12 +131,12 @@ class World(_tessera.World):
     it makes tiles.
     """
 
-    def __init__(self, exemplar, tile_size, cache_dir=None, **options):
-        _options.check_keywords("World", options, ("grow",))
+    def __init__(self, exemplar, tile_size, cache_dir=None, method="grow", **options):
+        options = _method_options("World", method, options)
         cache_dir = None if cache_dir is None else os.fspath(cache_dir)
         super().__init__(_as_exemplar(exemplar), tile_size, cache_dir, options)
 
-    _options.with_signature(__init__, ("self", "exemplar", "tile_size", "cache_dir"), ("grow",))
+    _options.with_signature(__init__, ("self", "exemplar", "tile_size", "cache_dir", "method"), _METHODS)
 
 
 class WorldTiles:
@@ -158,7 +168,7 @@ class WorldTiles:
 
 # ---- builds -------------------------------------------------------------------------------
 
-def build_local(exemplar, tiles, tile_size, *, progress=None, **options):
+def build_local(exemplar, tiles, tile_size, *, method="grow", progress=None, **options):
     """The tiles `tiles` of a world, made in this process one after another (a reference for
     build, and enough for small ranges); returns a WorldTiles.
 
@@ -171,7 +181,7 @@ def build_local(exemplar, tiles, tile_size, *, progress=None, **options):
     Other arguments and options as for TileMaker. Raises OptionError naming `tiles`,
     `tile_size` or the option at fault, InputError for an invalid exemplar.
     """
-    _options.check_keywords("build_local", options, ("grow",))
+    options = _method_options("build_local", method, options)
     exemplar, _ = _canonical(exemplar)
     wanted = tiles_of(tiles, exemplar.dimension)
     report = _reporter(progress)
@@ -184,7 +194,8 @@ def build_local(exemplar, tiles, tile_size, *, progress=None, **options):
     return WorldTiles({coord: made[coord] for coord in wanted}, len(made), exemplar.dimension, maker.tile_size)
 
 
-def build(exemplar, tiles, tile_size, client=None, *, timeout=30, n_workers=2, retries=2, progress=None, **options):
+def build(exemplar, tiles, tile_size, client=None, *, method="grow", timeout=30, n_workers=2, retries=2, progress=None,
+          **options):
     """The tiles `tiles` of a world, made on Dask.distributed, one task per tile; returns a
     WorldTiles whose tiles are byte-identical to build_local's and to World's.
 
@@ -213,7 +224,7 @@ def build(exemplar, tiles, tile_size, client=None, *, timeout=30, n_workers=2, r
     `tiles`, `tile_size` or the option, InputError for an invalid exemplar. A tile's error on
     a worker is raised here as the library raised it.
     """
-    _options.check_keywords("build", options, ("grow",))
+    options = _method_options("build", method, options)
     exemplar, text = _canonical(exemplar)
     wanted = tiles_of(tiles, exemplar.dimension)
     report = _reporter(progress)
@@ -237,9 +248,26 @@ def build(exemplar, tiles, tile_size, client=None, *, timeout=30, n_workers=2, r
     return WorldTiles(made, len(order), exemplar.dimension, maker.tile_size)
 
 
-_options.with_signature(build_local, ("exemplar", "tiles", "tile_size"), ("grow",), ("progress",))
-_options.with_signature(build, ("exemplar", "tiles", "tile_size", "client"), ("grow",),
-                        ("timeout", "n_workers", "retries", "progress"))
+_options.with_signature(build_local, ("exemplar", "tiles", "tile_size"), _METHODS, ("method", "progress"))
+_options.with_signature(build, ("exemplar", "tiles", "tile_size", "client"), _METHODS,
+                        ("method", "timeout", "n_workers", "retries", "progress"))
+
+
+def _method_options(name, method, options):
+    """The options of `method` ("grow" or "pcf") with the method's name under "method", as the
+    library's TileMaker takes them: a TypeError for a keyword neither method has, an
+    OptionError for an unknown method or an option of the other one set off its default."""
+    _options.check_keywords(name, options, _METHODS)
+    if method not in _METHODS:
+        raise OptionError("method must be 'grow' or 'pcf', got %r" % (method,))
+    other = "pcf" if method == "grow" else "grow"
+    mine, theirs = set(_options.keywords(method)), _options.defaults(other)
+    for keyword, value in options.items():
+        if keyword not in mine and value is not None and value != theirs[keyword]:
+            raise OptionError("%s applies to method=%r only" % (keyword, other))
+    chosen = {keyword: value for keyword, value in options.items() if keyword in mine}
+    chosen["method"] = method
+    return chosen
 
 
 def _reporter(progress):

@@ -273,3 +273,38 @@ def test_progress_can_stop_a_build():
     assert [e["iteration"] for e in events] == [1, 2, 3]
     assert events[0]["stage"] == "tile" and events[0]["iterations"] == 17
     assert 0 < events[-1]["fraction"] < 1
+
+
+# ---- tiles by the PCF method --------------------------------------------------------------
+
+POISSON = ROOT / "examples" / "poisson_disk_2d.json"
+
+
+def test_pcf_tiles_are_the_same_streamed_built_on_dask_and_by_the_cli(tmp_path):
+    local = world.build_local(POISSON, ((0, 2), (0, 2)), 10.0, method="pcf", seed=2)
+    streaming = world.World(POISSON, 10.0, method="pcf", seed=2, threads=2)
+    for coord in [(1, 1), (0, 0), (1, 0), (0, 1)]:
+        assert world.tile_hash(streaming.tile(coord)) == local.hashes[coord]
+    built = world.build(POISSON, ((0, 2), (0, 2)), 10.0, method="pcf", n_workers=2, seed=2)
+    assert built.hashes == local.hashes
+    grown = world.build_local(POISSON, ((0, 2), (0, 2)), 10.0, seed=2)
+    assert grown.hashes != local.hashes  # the method is not ignored
+    exemplar = tessera.load(POISSON)
+    expected = exemplar.element_count / exemplar.domain.measure * 4 * 10.0 ** 2
+    count = sum(len(t["classes"]) for t in local.tiles.values())
+    assert abs(count - expected) < 0.03 * expected  # the exemplar's density, tile by tile
+    if "TESSERA_CLI" in os.environ:
+        subprocess.run([os.environ["TESSERA_CLI"], "world", str(POISSON), "--method", "pcf", "--tiles", "0:2,0:2",
+                        "--tile-size", "10", "--seed", "2", "-o", str(tmp_path / "w"), "-q"], check=True)
+        index = json.loads((tmp_path / "w" / "index.json").read_text())
+        assert {tuple(t["tile"]): t["hash"] for t in index["tiles"]} == local.hashes
+
+
+def test_a_pcf_world_names_the_options_of_the_other_method():
+    with pytest.raises(tessera.OptionError, match="patch_extent applies to method='grow' only"):
+        world.TileMaker(POISSON, 10.0, method="pcf", patch_extent=2.0)
+    with pytest.raises(tessera.OptionError, match="method must be 'grow' or 'pcf', got 'det'"):
+        world.World(POISSON, 10.0, method="det")
+    with pytest.raises(tessera.OptionError, match="method: the PCF method makes 2D worlds"):
+        world.TileMaker(ROOT / "examples" / "spheres_3d.json", 10.0, method="pcf")
+    assert "method" in str(__import__("inspect").signature(world.build))
