@@ -135,15 +135,7 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None,
     Raises OptionError/DomainError/InputError (ValueErrors) naming what is wrong, FileError,
     Cancelled. The GIL is released while the library works.
     """
-    _options.check_keywords("synthesize", options, ("det", "pcf"))
-    if method not in ("det", "pcf"):
-        raise OptionError("method must be 'det' or 'pcf', got %r" % (method,))
-    other = "pcf" if method == "det" else "det"
-    mine, theirs = set(_options.keywords(method)), _options.defaults(other)
-    for name, value in options.items():
-        if name not in mine and value is not None and value != theirs[name]:
-            raise OptionError("%s applies to method=%r only" % (name, other))
-    options = {name: value for name, value in options.items() if name in mine}
+    options = _options.of_method("synthesize", method, ("det", "pcf"), options)
     if progress is not None and not callable(progress):
         raise OptionError("progress must be callable, got %r" % (progress,))
     if isinstance(exemplar, (str, bytes, _os.PathLike)):

@@ -8,6 +8,7 @@ flags, these keywords, their defaults, their docs and their checks all come from
 import inspect
 
 from . import _tessera
+from .errors import OptionError
 
 TABLES = _tessera.option_tables()
 
@@ -75,3 +76,18 @@ def check_keywords(name, given, methods):
     for keyword in given:
         if keyword not in known:
             raise TypeError("%s() got an unexpected keyword argument %r" % (name, keyword))
+
+
+def of_method(name, method, methods, options):
+    """The keywords of `options` that belong to `method`, one of the two `methods` of the
+    call `name`: a TypeError for a keyword neither has, an OptionError for another method or
+    for an option of the other method set off its default."""
+    check_keywords(name, options, methods)
+    if method not in methods:
+        raise OptionError("method must be %r or %r, got %r" % (methods[0], methods[1], method))
+    other = methods[1] if method == methods[0] else methods[0]
+    mine, theirs = set(keywords(method)), defaults(other)
+    for keyword, value in options.items():
+        if keyword not in mine and value is not None and value != theirs[keyword]:
+            raise OptionError("%s applies to method=%r only" % (keyword, other))
+    return {keyword: value for keyword, value in options.items() if keyword in mine}

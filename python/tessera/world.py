@@ -257,15 +257,7 @@ def _method_options(name, method, options):
     """The options of `method` ("grow" or "pcf") with the method's name under "method", as the
     library's TileMaker takes them: a TypeError for a keyword neither method has, an
     OptionError for an unknown method or an option of the other one set off its default."""
-    _options.check_keywords(name, options, _METHODS)
-    if method not in _METHODS:
-        raise OptionError("method must be 'grow' or 'pcf', got %r" % (method,))
-    other = "pcf" if method == "grow" else "grow"
-    mine, theirs = set(_options.keywords(method)), _options.defaults(other)
-    for keyword, value in options.items():
-        if keyword not in mine and value is not None and value != theirs[keyword]:
-            raise OptionError("%s applies to method=%r only" % (keyword, other))
-    chosen = {keyword: value for keyword, value in options.items() if keyword in mine}
+    chosen = _options.of_method(name, method, _METHODS, options)
     chosen["method"] = method
     return chosen
 

@@ -61,6 +61,17 @@ Arrangement window(const Arrangement& a, const Vec3& lo, const Vec3& hi) {
 }
 
 
+// The distance of the closest pair of elements in different tiles of a 2D world.
+double closest_pair_across_borders(const Arrangement& all, double tile_size) {
+    double across = 1e300;
+    for (size_t a = 0; a < all.elements.size(); ++a)
+        for (size_t b = a + 1; b < all.elements.size(); ++b) {
+            const Vec3 pa = all.elements[a].position, pb = all.elements[b].position;
+            if (tile_at(pa, tile_size, 2) != tile_at(pb, tile_size, 2)) across = std::min(across, norm(pa - pb));
+        }
+    return across;
+}
+
 // Rounded to 1e-4: a translated copy made by the same deterministic growth lands on the same
 // keys; independent growth does not.
 std::string position_key(int type, double x, double y) {
@@ -255,12 +266,7 @@ TEST(World, BordersKeepThePairCorrelationAndNoPairCrowdsAcrossThem) {
     EXPECT_LE(corner_error, 1.25 * inside_error + 0.01) << "corners " << corner_error << ", inside " << inside_error;
     // The closest pair across a border is no closer than the exemplar's closest pair allows.
     const double closest = nearest_neighbor_distances(ex).min;
-    double across = 1e300;
-    for (size_t a = 0; a < all.elements.size(); ++a)
-        for (size_t b = a + 1; b < all.elements.size(); ++b) {
-            const Vec3 pa = all.elements[a].position, pb = all.elements[b].position;
-            if (tile_at(pa, size, 2) != tile_at(pb, size, 2)) across = std::min(across, norm(pa - pb));
-        }
+    const double across = closest_pair_across_borders(all, size);
     EXPECT_GE(across, 0.95 * closest) << "closest pair across a border " << across << ", exemplar " << closest;
     test::expect_no_crowding(ex, all, "Poisson disks over 4 x 4 tiles");
     EXPECT_LE(largest_empty_circle(window(all, {size * 0.5, size * 0.5, 0}, {size * 3.5, size * 3.5, 0})).radius,
@@ -342,12 +348,7 @@ TEST(WorldPcf, TilesKeepTheDensityAndThePairCorrelationAcrossBorders) {
         }
     EXPECT_LE(corner_error, 1.25 * inside_error + 0.01) << "corners " << corner_error << ", inside " << inside_error;
     const double closest = nearest_neighbor_distances(ex).min;
-    double across = 1e300;
-    for (size_t a = 0; a < all.elements.size(); ++a)
-        for (size_t b = a + 1; b < all.elements.size(); ++b) {
-            const Vec3 pa = all.elements[a].position, pb = all.elements[b].position;
-            if (tile_at(pa, size, 2) != tile_at(pb, size, 2)) across = std::min(across, norm(pa - pb));
-        }
+    const double across = closest_pair_across_borders(all, size);
     EXPECT_GE(across, 0.95 * closest) << "closest pair across a border " << across << ", exemplar " << closest;
     test::expect_no_crowding(ex, all, "PCF Poisson disks over 3 x 3 tiles");
 }
