@@ -194,7 +194,7 @@ int TypeBalance::short_type(int u) const {
 }
 
 int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge,
-                     const Domain* region) {
+                     const Domain* region, std::vector<Candidate>& over_ceiling) {
     std::vector<int> order(candidates.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
     std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -216,6 +216,39 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
     std::vector<int> blocking;
     std::vector<char> displaced(g.out.size() - g.recent_first, 0);
     TypeBalance balance(g);
+    // The count ceiling (grow/crowd_ceiling.hpp) over elements and taken candidates alike:
+    // the existing elements' crowd grows by `pending` as candidates are taken near them.
+    const CrowdCeiling& ceiling = g.crowd;
+    core::DynamicGrid crowd_grid(ceiling.active() ? ceiling.radius : 1.0, g.metric.dimension);
+    std::vector<int> pending(ceiling.active() ? g.out.size() : 0, 0), kept_crowd;
+    auto within_ceiling = [&](const Vec3& p) {
+        if (!ceiling.active()) return true;
+        int own = 0;
+        bool fits = true;
+        g.grid.for_each_within(
+            p, ceiling.radius, [&](int i) { return g.out[i].p; },
+            [&](int i) {
+                ++own;
+                fits = fits && ceiling.allows(g.out[i].crowd + pending[i] + 1);
+            });
+        crowd_grid.for_each_within(
+            p, ceiling.radius, [&](int k) { return kept[k].p; },
+            [&](int k) {
+                ++own;
+                fits = fits && ceiling.allows(kept_crowd[k] + 1);
+            });
+        return fits && ceiling.allows(own);
+    };
+    auto count_taken = [&](const Vec3& p) {
+        if (!ceiling.active()) return;
+        int own = 0;
+        g.grid.for_each_within(
+            p, ceiling.radius, [&](int i) { return g.out[i].p; }, [&](int i) { ++pending[i], ++own; });
+        crowd_grid.for_each_within(
+            p, ceiling.radius, [&](int k) { return kept[k].p; }, [&](int k) { ++kept_crowd[k], ++own; });
+        crowd_grid.insert(static_cast<int>(kept_crowd.size()), p);
+        kept_crowd.push_back(own);
+    };
     // The elements and taken candidates a candidate of type t at p (samples `mine`) would
     // crowd: existing ones into `blocking`; returns true when a taken candidate is crowded
     // (then `blocking` is left empty: most candidates merge with a taken one, and the
@@ -335,6 +368,12 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
             if ((crowds(c.p, c.type, mine, blocking) || !blocking.empty()) && reshape(c)) ++g.reshaped;
         }
         if (crowds(c.p, c.type, mine, blocking)) return false;
+        if (!within_ceiling(c.p)) {
+            ++g.over_ceiling;
+            over_ceiling.push_back(c);
+            ++over_ceiling.back().tries;
+            return false;
+        }
         if (!blocking.empty()) {
             // A type short of its share may take the place of recent elements of types over
             // theirs (the big element the small ones crowded out); otherwise it yields.
@@ -350,6 +389,7 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
                 c.source = source;
             }
         }
+        count_taken(c.p);
         taken_grid.insert(static_cast<int>(kept.size()), c.p);
         kept.push_back(c);
         balance.add(c.type);

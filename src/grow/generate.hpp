@@ -53,8 +53,12 @@ int drop_outside(const Grower::Impl& g, const Domain& region, std::vector<Candid
 // candidate closer than `merge` times it (1: the patch choice; the tree search merges only
 // near-duplicates and resolves the other conflicts itself). A candidate of a type short of
 // its share in the output may displace last round's elements of types over theirs (they are
-// removed). Returns how many candidates were dropped.
-int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge, const Domain* region);
+// removed). A candidate that would break the count ceiling (Impl::crowd) is dropped into
+// `over_ceiling` (its tries counted): the crowding its neighbourhood shows at the horizon
+// may be gone a round later, once the elements around it have settled. Returns how many
+// candidates were dropped.
+int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double merge, const Domain* region,
+                     std::vector<Candidate>& over_ceiling);
 
 // The energy filter, on candidates already added as elements [first, end): each one's best
 // neighbourhood energy (per neighbour) against the round's mean; those above t times it

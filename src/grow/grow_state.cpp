@@ -81,6 +81,11 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
                 owned[a * types + b] = typical > 0.0 && hard_core(a, b) < kSoftCore * typical;
                 any_owned = any_owned || owned[a * types + b];
             }
+    if (any_owned) {  // a hard core regulates the other patterns' density
+        double total = 0.0;
+        for (const double d : metric.params.type_density) total += d;
+        crowd = grow::exemplar_crowd_ceiling(exemplar, total);
+    }
     type_count.assign(types, 0);
     existing.dimension = exemplar.dimension;
     existing.types = exemplar.types;
@@ -108,20 +113,26 @@ int Grower::Impl::add(const grow::OutElement& e) {
     const int i = static_cast<int>(out.size());
     out.push_back(e);
     ++type_count[e.type];
+    if (crowd.active()) out[i].crowd = count_crowd(e.p, i, +1);
     grid.insert(i, e.p);
     dirty = true;
     return i;
 }
 
 void Grower::Impl::move(int i, const Vec3& p) {
+    if (crowd.active()) count_crowd(out[i].p, i, -1);
     out[i].p = p;
     if (metric.dimension == 2) out[i].p.z = 0.0;
+    if (crowd.active()) out[i].crowd = count_crowd(out[i].p, i, +1);
     grid.move(i, out[i].p);
     dirty = true;
 }
 
 void Grower::Impl::drop_tail(int first, const std::vector<char>& keep) {
     const int n = static_cast<int>(out.size());
+    if (crowd.active())
+        for (int i = first; i < n; ++i)
+            if (!keep[i - first]) count_crowd(out[i].p, i, -1);
     for (int i = first; i < n; ++i) grid.remove(i);
     int w = first;
     for (int i = first; i < n; ++i)
@@ -132,6 +143,26 @@ void Grower::Impl::drop_tail(int first, const std::vector<char>& keep) {
     out.resize(w);
     for (int i = first; i < w; ++i) grid.insert(i, out[i].p);
     dirty = true;
+}
+
+int Grower::Impl::count_crowd(const Vec3& p, int self, int change) {
+    int n = 0;
+    grid.for_each_within(
+        p, crowd.radius, [&](int j) { return out[j].p; },
+        [&](int j) {
+            if (j == self) return;
+            out[j].crowd += change;
+            ++n;
+        });
+    return n;
+}
+
+bool Grower::Impl::crowd_allows(const Vec3& p) const {
+    if (!crowd.active()) return true;
+    int own = 0;
+    grid.for_each_within(
+        p, crowd.radius, [&](int j) { return out[j].p; }, [&](int) { ++own; });
+    return crowd.allows(own + 1);
 }
 
 void Grower::Impl::set_type(int i, int type) {

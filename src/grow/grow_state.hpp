@@ -9,6 +9,7 @@
 #include "core/crowding_repair.hpp"
 #include "core/dynamic_grid.hpp"
 #include "core/interrupt.hpp"
+#include "grow/crowd_ceiling.hpp"
 #include "grow/input_elements.hpp"
 #include "grow/pairing.hpp"
 #include "tessera/grow.hpp"
@@ -30,6 +31,7 @@ struct OutElement {
     int born = 0;    // round that made it
     bool locked = false;
     int tries = 0;  // as Candidate::tries, while it is being filtered
+    int crowd = 0;  // other elements within Impl::crowd's radius (kept only while it is active)
     std::uint64_t id = 0;
 };
 
@@ -81,6 +83,9 @@ struct Grower::Impl {
     // one, so that the hard core alone does not keep patches copied at misaligned offsets
     // from both filling one place.
     std::vector<char> owned;
+    // The count ceiling the overlap filter holds every element to (grow/crowd_ceiling.hpp);
+    // add, move and drop_tail keep each element's `crowd` up to date while it is active.
+    grow::CrowdCeiling crowd;
     bool any_owned = false;
     bool owned_by_proposer(int candidate_type, int other_type) const {
         return owned[candidate_type * exemplar.types.size() + other_type] != 0;
@@ -103,6 +108,7 @@ struct Grower::Impl {
     std::vector<int> round_first;
     int recent_first = 0;
     int displaced = 0;  // elements removed so, in the current round
+    int over_ceiling = 0;  // candidates the count ceiling dropped (all calls)
     int reshaped = 0;   // multi-sample candidates that took another input element's shape
     std::uint64_t next_id = 0;
     Box grown;  // union of the regions grown (the arrangement's domain)
@@ -155,6 +161,14 @@ struct Grower::Impl {
     double compute_hard_core(int a, int b) const;
     // Appends an element (grid included); returns its index.
     int add(const grow::OutElement& e);
+    // Adds `change` to the crowd of every element other than `self` within the ceiling's
+    // radius of p; returns how many there are.
+    int count_crowd(const Vec3& p, int self, int change);
+    // Whether an element at p would have no more neighbours within the ceiling's radius than
+    // the ceiling allows, one more counted for slack (always, while the ceiling is inactive).
+    // The hole filling asks only this: a hole's neighbours count the crowded places around
+    // it too, and a hole left open is worse than a count one over the ceiling.
+    bool crowd_allows(const Vec3& p) const;
     // Changes element i's type (the counts included).
     void set_type(int i, int type);
     // Removes every element (a fresh output over the same index).

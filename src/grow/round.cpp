@@ -43,10 +43,11 @@ int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     for (Candidate& c : g.retry) candidates.push_back(c);  // after the fresh ones: they yield to them
     g.retry.clear();
     if (limits.region) report.outside += drop_outside(g, *limits.region, candidates);
+    std::vector<Candidate> dropped;  // proposed again next round (their tries counted)
     if (g.options.choice == GrowChoice::patch) {
-        report.merged += drop_overlapping(g, candidates, 1.0, limits.region);
+        report.merged += drop_overlapping(g, candidates, 1.0, limits.region, dropped);
     } else {
-        report.merged += drop_overlapping(g, candidates, kTreeSearchMerge, limits.region);
+        report.merged += drop_overlapping(g, candidates, kTreeSearchMerge, limits.region, dropped);
         const size_t before = candidates.size();
         choose_by_tree_search(g, candidates);
         report.merged += static_cast<int>(before - candidates.size());
@@ -54,7 +55,6 @@ int run_round(Grower::Impl& g, const RoundLimits& limits, GrowReport& report) {
     keep_nearest(candidates, limits.origin, limits.budget);
     const int first = add_candidates(g, candidates);
     double mean = 0.0;
-    std::vector<Candidate> dropped;
     try {
         report.high_energy += drop_high_energy(g, first, g.options.energy_factor, mean, dropped);
     } catch (const Cancelled&) {  // the round's elements are not set up yet: it never happened

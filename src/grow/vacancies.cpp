@@ -188,7 +188,7 @@ private:
         g_.grid.query(
             c, std::max(g_.reach, depth + finder_.max_rim() + 1e-9), [&](int j) { return g_.out[j].p; },
             probe_);
-        if (probe_.empty()) return false;
+        if (probe_.empty() || !g_.crowd_allows(c)) return false;
         int nearest = probe_[0];
         for (const int j : probe_)
             if (norm(g_.out[j].p - c) < norm(g_.out[nearest].p - c)) nearest = j;
