@@ -164,10 +164,10 @@ struct Grower::Impl {
     // Adds `change` to the crowd of every element other than `self` within the ceiling's
     // radius of p; returns how many there are.
     int count_crowd(const Vec3& p, int self, int change);
-    // Whether an element at p would have no more neighbours within the ceiling's radius than
-    // the ceiling allows, one more counted for slack (always, while the ceiling is inactive).
-    // The hole filling asks only this: a hole's neighbours count the crowded places around
-    // it too, and a hole left open is worse than a count one over the ceiling.
+    // Whether an element at p would have at least one neighbour fewer within the ceiling's
+    // radius than the ceiling allows (always, while the ceiling is inactive). The hole
+    // filling asks only this, not its neighbours' counts: those count the crowded places
+    // around the hole too, and a hole left open is worse than a neighbour over the ceiling.
     bool crowd_allows(const Vec3& p) const;
     // Changes element i's type (the counts included).
     void set_type(int i, int type);
