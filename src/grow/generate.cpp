@@ -116,9 +116,11 @@ int drop_outside(const Grower::Impl& g, const Domain& region, std::vector<Candid
         if (g.open_region) return !region.inside(c.p);  // the neighbouring cell's to place
         if (!region.inside(c.p)) {
             // Just outside: moved to the boundary, so that the region's edge is not left
-            // with a gap wherever the pattern's rows happen to fall beyond it.
+            // with a gap wherever the pattern's rows happen to fall beyond it. Not under a
+            // count ceiling: its patterns have no rows, and a band's candidates pulled onto
+            // the edge would line up there (field data grew 5% over their density so).
             const Vec3 q = region.closest_inside(c.p);
-            if (norm(q - c.p) > pull) return true;
+            if (g.crowd.active() || norm(q - c.p) > pull) return true;
             c.p = q;
         }
         g.sample_positions(-1, c.source, c.frame, c.p, samples);
