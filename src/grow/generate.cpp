@@ -371,7 +371,6 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
         }
         if (crowds(c.p, c.type, mine, blocking)) return false;
         if (!within_ceiling(c.p)) {
-            ++g.over_ceiling;
             over_ceiling.push_back(c);
             ++over_ceiling.back().tries;
             return false;

@@ -108,7 +108,6 @@ struct Grower::Impl {
     std::vector<int> round_first;
     int recent_first = 0;
     int displaced = 0;  // elements removed so, in the current round
-    int over_ceiling = 0;  // candidates the count ceiling dropped (all calls)
     int reshaped = 0;   // multi-sample candidates that took another input element's shape
     std::uint64_t next_id = 0;
     Box grown;  // union of the regions grown (the arrangement's domain)
