@@ -10,6 +10,7 @@
 // shared_ptr<const>, so copies are cheap and concurrent queries are safe.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -85,6 +86,13 @@ public:
     static Domain shell(const std::string& path, double thickness, int resolution = 128);
     static Domain shell(const TriangleMesh& mesh, double thickness, int resolution = 128,
                         const std::string& name = "mesh");
+
+    // The part of `within` where keep(p) holds, on a grid of cells of size `cell` (a mask in
+    // 2D, a voxel volume in 3D; inside where the interpolated cell values reach 1/2). For
+    // regions computed by a method (the band a brush stroke sweeps). Error(domain) when no
+    // cell is kept or the grid would exceed 2^24 cells.
+    static Domain region(const Domain& within, const std::function<bool(const Vec3&)>& keep, double cell,
+                         const std::string& name = "region");
 
     Kind kind() const { return kind_; }
     int dimension() const { return dimension_; }

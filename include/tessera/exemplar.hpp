@@ -11,6 +11,7 @@
 // run) so that neighbour queries and solvers work on plain arrays.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -44,6 +45,11 @@ struct ElementType {
     // Last and with an initializer, so that brace initialisations of the fields above stay
     // valid and warning-free.
     std::string color = {};
+    // Brushing (brush.hpp): the weight of each sample (a bounding radius, by sample id) and
+    // the element graph (edges between sample ids); empty = the defaults of
+    // brush_sample_weights() and brush_element_graph().
+    std::vector<double> weights = {};
+    std::vector<std::array<int, 2>> graph = {};
 };
 
 struct Element {

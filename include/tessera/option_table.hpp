@@ -14,7 +14,8 @@
 // Adding an option: a field in the options struct, a row in its method's table
 // (src/det/det_option_table.cpp, src/pcf/pcf_option_table.cpp,
 // src/grow/grow_option_table.cpp, src/det/edit_option_table.cpp,
-// src/pcf/pcf_analysis_option_table.cpp, src/metrics/pair_correlation_option_table.cpp),
+// src/pcf/pcf_analysis_option_table.cpp, src/metrics/pair_correlation_option_table.cpp,
+// src/brush/brush_option_table.cpp),
 // the code that uses it, and a line in docs/cli.md.
 #pragma once
 
@@ -33,6 +34,7 @@ struct GrowOptions;
 struct EditOptions;
 struct PcfAnalysisSettings;
 struct PcfOptions;
+struct BrushOptions;
 
 enum class OptionKind {
     flag,     // true / false (a CLI flag without a value)
@@ -84,6 +86,8 @@ const OptionTable<DetOptions>& det_option_table();
 const OptionTable<PcfSynthOptions>& pcf_option_table();
 const OptionTable<GrowOptions>& grow_option_table();
 const OptionTable<EditOptions>& edit_option_table();
+// Brushing (`tessera brush`, session files' "options", the studio's requests).
+const OptionTable<BrushOptions>& brush_option_table();
 // The PCF method's analysis (`tessera analyze`, analyze_distribution); pcf_option_table()
 // holds the same rows, read through PcfSynthOptions::analysis.
 const OptionTable<PcfAnalysisSettings>& pcf_analysis_option_table();

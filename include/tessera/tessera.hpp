@@ -1,6 +1,7 @@
 // tessera/tessera.hpp — umbrella header: the whole public API.
 #pragma once
 
+#include "tessera/brush.hpp"
 #include "tessera/det.hpp"
 #include "tessera/det_session.hpp"
 #include "tessera/domain.hpp"

@@ -9,6 +9,29 @@
 
 namespace tessera {
 
+namespace {
+
+// Brushing's per-type fields (brush.hpp): a weight > 0 per sample id, graph edges between
+// two distinct sample ids of the type's elements. `count` is the type's sample count (-1
+// when the type has no element).
+template <class Fail>
+void validate_brush_fields(const ElementType& type, int count, const Fail& fail) {
+    const std::string which = "element type '" + type.name + "'";
+    for (double w : type.weights)
+        if (!std::isfinite(w) || !(w > 0.0)) fail(which + " has a sample weight that is not a number > 0");
+    if (!type.weights.empty() && count >= 0 && count != static_cast<int>(type.weights.size()))
+        fail(which + " has " + std::to_string(type.weights.size()) + " sample weights but its elements have " +
+             std::to_string(count) + " samples");
+    for (const auto& edge : type.graph) {
+        const bool in_range = count < 0 || (edge[0] < count && edge[1] < count);
+        if (edge[0] < 0 || edge[1] < 0 || edge[0] == edge[1] || !in_range)
+            fail(which + " has a graph edge [" + std::to_string(edge[0]) + ", " + std::to_string(edge[1]) +
+                 "] that does not join two of its " + std::to_string(count) + " samples");
+    }
+}
+
+}  // namespace
+
 int Exemplar::find_type(const std::string& name) const {
     for (size_t i = 0; i < types.size(); ++i)
         if (types[i].name == name) return static_cast<int>(i);
@@ -99,6 +122,7 @@ void Exemplar::validate(const std::string& source) const {
         if (!reference.empty() && count_of_type[t] >= 0 && count_of_type[t] != static_cast<int>(reference.size()))
             fail("element type '" + types[t].name + "' has a reference layout of " + std::to_string(reference.size()) +
                  " samples but its elements have " + std::to_string(count_of_type[t]));
+        validate_brush_fields(types[t], count_of_type[t], fail);
     }
     for (size_t i = 0; i < samples.size(); ++i) {
         const auto& s = samples[i];

@@ -28,6 +28,7 @@ enum class Purpose : std::uint64_t {
     grow_seed = 8,      // growth: where in the exemplar the seed patch is taken
     grow_playout = 9,   // growth: the tree search's random play-outs
     world_seed = 10,    // worlds: where a first-phase tile's seed patches go
+    brush_field = 11,   // brushing: the tilt that breaks a symmetric element field's saddle
     test = 99
 };
 

@@ -246,7 +246,8 @@ private:
             const std::string where = "types[" + std::to_string(i) + "]";
             const Json& t = types[i];
             if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
-            check_keys(t, {"name", "rigid", "floor", "mesh", "color", "reference", "depends_on"}, where);
+            check_keys(t, {"name", "rigid", "floor", "mesh", "color", "reference", "depends_on", "weights", "graph"},
+                       where);
             ElementType type;
             type.name = string(require(t, "name", where), member(where, "name"));
             if (type.name.empty()) fail(member(where, "name"), "must not be empty");
@@ -270,6 +271,8 @@ private:
                     type.reference.push_back(point(points[k], at + "[" + std::to_string(k) + "]"));
             }
             if (t.contains("depends_on")) type.depends_on = depends_on(t["depends_on"], member(where, "depends_on"));
+            if (t.contains("weights")) type.weights = weights(t["weights"], member(where, "weights"));
+            if (t.contains("graph")) type.graph = graph(t["graph"], member(where, "graph"));
             ex.types.push_back(std::move(type));
         }
         // Names may refer to types listed later, so they are checked once all are read.
@@ -282,6 +285,34 @@ private:
                          "type '" + ex.types[i].name + "' depends on unknown type '" + name + "'");
             }
         }
+    }
+
+    // Brushing's sample weights (brush.hpp): numbers > 0, one per sample id (the count is
+    // checked against the type's elements by Exemplar::validate).
+    std::vector<double> weights(const Json& value, const std::string& where) const {
+        const Json& list = array(value, where);
+        std::vector<double> out;
+        for (size_t k = 0; k < list.size(); ++k) {
+            const std::string at = where + "[" + std::to_string(k) + "]";
+            if (!list[k].is_number()) fail(at, "must be a number, got " + list[k].dump());
+            out.push_back(list[k].get<double>());
+        }
+        return out;
+    }
+
+    // Brushing's element graph (brush.hpp): pairs [i, j] of sample ids (checked against the
+    // type's sample count by Exemplar::validate).
+    std::vector<std::array<int, 2>> graph(const Json& value, const std::string& where) const {
+        const Json& list = array(value, where);
+        std::vector<std::array<int, 2>> out;
+        for (size_t k = 0; k < list.size(); ++k) {
+            const std::string at = where + "[" + std::to_string(k) + "]";
+            const Json& edge = list[k];
+            if (!edge.is_array() || edge.size() != 2 || !edge[0].is_number_integer() || !edge[1].is_number_integer())
+                fail(at, "must be a pair of sample ids [i, j], got " + edge.dump());
+            out.push_back({edge[0].get<int>(), edge[1].get<int>()});
+        }
+        return out;
     }
 
     // The classes a type depends on in the PCF method's dependency graph
@@ -589,6 +620,12 @@ std::string io_detail::to_json_with_mesh_paths(const Exemplar& data, const RunSt
             type["reference"] = std::move(reference);
         }
         if (t.depends_on) type["depends_on"] = *t.depends_on;
+        if (!t.weights.empty()) type["weights"] = t.weights;
+        if (!t.graph.empty()) {
+            OrderedJson graph = OrderedJson::array();
+            for (const auto& edge : t.graph) graph.push_back({edge[0], edge[1]});
+            type["graph"] = std::move(graph);
+        }
         types.push_back(std::move(type));
     }
     std::vector<OrderedJson> elements;

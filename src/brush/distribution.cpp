@@ -1,0 +1,154 @@
+// The search step of the brush solver (brush/distribution.hpp): Eq. 1 and Eq. 2.
+#include "brush/distribution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/parallel.hpp"
+#include "tessera/field.hpp"
+
+namespace tessera::brush {
+
+namespace {
+
+// A neighbour of another type than the input's costs this share of r^2 more (the attribute
+// term of the neighbourhood metric; Eq. 1 itself compares positions only).
+constexpr double kTypeMismatch = 0.25;
+// Pairs of the assignment: at most this share of the exemplar's spacing apart (the threshold c
+// of the partial pair assignment, as growth uses it).
+constexpr double kPairThreshold = 0.4;
+
+struct LocalNeighbour {
+    Vec3 offset;     // R(o(s_o))^-1 (p(s'_o) - p(s_o))
+    double weight;   // c(s'_o) w_s(s'_o)
+    int type;
+    int sample;
+};
+
+struct Scratch {
+    std::vector<int> found;
+    std::vector<LocalNeighbour> local;
+    std::vector<char> used;
+    std::vector<int> paired, best_paired;
+};
+
+// Where an input neighbour would fall around the output sample: in the canvas or not.
+struct Placement {
+    const Domain& canvas;
+    Vec3 origin;
+    Quat frame;
+    double scale;
+    bool inside(const Vec3& offset) const { return canvas.inside(origin + frame.rotate(offset * scale)); }
+};
+
+// Eq. 1 for one candidate input neighbourhood, greedy pairing in order of output distance;
+// stops once the cost exceeds `bound`. paired[j] = input neighbour of local[j] or -1.
+// An unpaired output neighbour costs r^2, and so does an unpaired input neighbour that would
+// fall inside the canvas: charging only the output side (as Eq. 1 reads) prefers the densest
+// input neighbourhoods, and the arrangement contracts round after round.
+double neighbourhood_cost(const InputNeighbourhood& in, double own_weight, const std::vector<LocalNeighbour>& local,
+                          double r2, double bound, const Placement& place, Scratch& scratch) {
+    scratch.used.assign(in.offsets.size(), 0);
+    scratch.paired.assign(local.size(), -1);
+    double cost = 0.0;
+    for (size_t j = 0; j < local.size() && cost < bound; ++j) {
+        double best = r2;
+        int best_k = -1;
+        for (size_t k = 0; k < in.offsets.size(); ++k) {
+            if (scratch.used[k]) continue;
+            const double w_scale = (local[j].weight + own_weight) / (in.weights[k] + in.weight);  // Eq. 1
+            double c = squared_norm(local[j].offset - in.offsets[k] * w_scale);
+            if (in.types[k] != local[j].type) c += kTypeMismatch * r2;
+            if (c < best) best = c, best_k = static_cast<int>(k);
+        }
+        cost += best;
+        if (best_k >= 0) scratch.used[static_cast<size_t>(best_k)] = 1, scratch.paired[j] = best_k;
+    }
+    for (size_t k = 0; k < in.offsets.size() && cost < bound; ++k)
+        if (!scratch.used[k] && place.inside(in.offsets[k])) cost += r2;
+    return cost;
+}
+
+void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s, SampleMatch& m, Scratch& scratch) {
+    const Arrangement& arr = st.arrangement;
+    const Element& e = arr.elements[arr.samples[s].element];
+    const OutType& ot = st.out_types[e.type];
+    const PaletteEntry& entry = st.palette[ot.kappa];
+    m.pairs.clear();
+    m.neighbourhood = -1;
+    m.cost = 0.0;
+    const Quat frame = frame_from_direction(st.direction[s], st.dimension);
+    const Quat inverse = frame.conjugate();
+    nb.gather(st, s, entry.radius, scratch.found);
+    scratch.local.clear();
+    for (int o : scratch.found) {
+        const Element& oe = arr.elements[arr.samples[o].element];
+        scratch.local.push_back({inverse.rotate(arr.samples[o].p - arr.samples[s].p) * (1.0 / e.scale),
+                                 oe.scale * st.weight_of_sample(o) / e.scale, oe.type, o});
+    }
+    const double own_weight = st.weight_of_sample(s);
+    const Placement place{st.domain, arr.samples[s].p, frame, e.scale};
+    const double r2 = entry.radius * entry.radius;
+    const double pair_limit2 = kPairThreshold * kPairThreshold * entry.spacing * entry.spacing;
+    double best = std::numeric_limits<double>::infinity();
+    for (int candidate : entry.by_type[ot.type][arr.samples[s].sample_id]) {
+        const double c =
+            neighbourhood_cost(entry.neighbourhoods[candidate], own_weight, scratch.local, r2, best, place, scratch);
+        if (c < best) best = c, m.neighbourhood = candidate, scratch.best_paired = scratch.paired;
+    }
+    if (m.neighbourhood < 0) return;
+    m.cost = best;
+    const InputNeighbourhood& in = entry.neighbourhoods[m.neighbourhood];
+    for (size_t j = 0; j < scratch.local.size(); ++j) {
+        const int k = scratch.best_paired[j];
+        if (k < 0) continue;
+        const double w_scale = (scratch.local[j].weight + own_weight) / (in.weights[k] + in.weight);
+        const Vec3 target = in.offsets[k] * w_scale;
+        // A pair further apart than the pairing threshold is more likely a wrong pairing than a
+        // displaced neighbour: it is charged by the search but predicts nothing.
+        if (squared_norm(scratch.local[j].offset - target) > pair_limit2) continue;
+        m.pairs.push_back({scratch.local[j].sample, target * e.scale});
+    }
+}
+
+}  // namespace
+
+void OutputNeighbours::build(const BrushCanvas::Impl& st) {
+    points.clear();
+    for (const Sample& s : st.arrangement.samples) points.push_back(s.p);
+    max_radius = 0.0;
+    for (const PaletteEntry& p : st.palette) max_radius = std::max(max_radius, p.radius);
+    grid.build(points, max_radius > 0.0 ? max_radius : 1.0, st.dimension);
+}
+
+void OutputNeighbours::gather(const BrushCanvas::Impl& st, int s, double radius, std::vector<int>& out) const {
+    out.clear();
+    const int element = st.arrangement.samples[s].element;
+    grid.for_each_within(points[s], radius, [&](int o, double) {
+        if (st.arrangement.samples[o].element != element) out.push_back(o);
+    });
+    // Nearest first (ties by index), so that the greedy pairing does not depend on the grid.
+    std::sort(out.begin(), out.end(), [&](int a, int b) {
+        const double da = squared_norm(points[a] - points[s]), db = squared_norm(points[b] - points[s]);
+        return da != db ? da < db : a < b;
+    });
+}
+
+void search_matches(const BrushCanvas::Impl& st, const std::vector<char>& movable, std::vector<SampleMatch>& matches) {
+    OutputNeighbours nb;
+    nb.build(st);
+    const int n = static_cast<int>(st.arrangement.samples.size());
+    matches.resize(static_cast<size_t>(n));
+    const int threads = core::resolve_threads(st.options.threads);
+    std::vector<Scratch> scratch(static_cast<size_t>(threads));
+    core::parallel_for(
+        n, threads,
+        [&](int begin, int end, int thread) {
+            for (int s = begin; s < end; ++s)
+                if (movable[s]) match_sample(st, nb, s, matches[s], scratch[static_cast<size_t>(thread)]);
+        },
+        16);
+}
+
+}  // namespace tessera::brush

@@ -1,0 +1,21 @@
+// brush/laplacian_field.hpp — a full direction field interpolated from partial strokes by
+// Laplacian (membrane) interpolation on a grid: the two-phase baseline of the paper's
+// Figure 5c, and the first guess from which fill() places its elements before the
+// element field is optimized on the elements themselves (section 4).
+#pragma once
+
+#include <vector>
+
+#include "tessera/brush.hpp"
+#include "tessera/field.hpp"
+
+namespace tessera::brush {
+
+// Minimises sum_nodes a(n) |u(n) - O(n)|^2 + sum_edges |u(n) - u(m)|^2 over the nodes of a
+// grid of `cell` over the canvas bounds, a(n) = exp(-d^2 / sigma^2) with d the distance to
+// the nearest stroke point (Eq. 5's falloff) and O its direction; solved by sparse Cholesky,
+// vectors normalised. No strokes: the empty field (the exemplar's frame everywhere).
+OrientationField interpolate_strokes(const Domain& canvas, const std::vector<Stroke>& strokes, double cell,
+                                     double sigma);
+
+}  // namespace tessera::brush

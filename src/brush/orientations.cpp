@@ -1,0 +1,222 @@
+// The element field's orientation solve (brush/orientations.hpp): Eq. 5, 6, 7 by L-BFGS.
+#include "brush/orientations.hpp"
+
+#include <LBFGS.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <limits>
+#include <exception>
+
+#include "brush/strokes.hpp"
+
+namespace tessera::brush {
+
+namespace {
+
+// Keeps |v| near 1 so that the normalisation stays well conditioned.
+constexpr double kNormPull = 0.1;
+
+struct Pair {
+    int a, b;
+    double weight;
+};
+
+// The terms, precomputed for fixed positions: per sample its alignment weight and target,
+// its distribution target; pairs for continuity and rigidity.
+struct FieldProblem {
+    int dim = 2;
+    std::vector<int> group;           // sample -> variable group, -1 fixed
+    std::vector<Vec3> fixed;          // sample -> its (fixed) direction
+    std::vector<double> align_w;      // w_alignment exp(-d^2 / sigma^2)
+    std::vector<Vec3> align_to;       // O(p)
+    std::vector<Pair> pairs;          // continuity (Eq. 6) and rigidity (Eq. 7)
+    int groups = 0;
+};
+
+double sigma_of(const BrushCanvas::Impl& st, int s) { return st.options.sigma * st.spacing_of_sample(s); }
+
+// Eq. 6, with each sample's kernel weights normalised to sum to 1 (the mean of the pair's two
+// sums): the term then weighs as much for a sample in a crowd as for one alone, against its
+// alignment and distribution terms.
+void add_continuity_pairs(const BrushCanvas::Impl& st, FieldProblem& fp, double weight) {
+    OutputNeighbours nb;
+    nb.build(st);
+    const Arrangement& arr = st.arrangement;
+    const size_t first = fp.pairs.size();
+    std::vector<double> sum(arr.samples.size(), 0.0);
+    for (int s = 0; s < static_cast<int>(arr.samples.size()); ++s) {
+        const double sigma = sigma_of(st, s);
+        nb.grid.for_each_within(nb.points[s], 2.0 * sigma, [&](int o, double d2) {
+            if (o <= s || arr.samples[o].element == arr.samples[s].element) return;
+            const double k = std::exp(-d2 / (sigma * sigma));
+            sum[s] += k, sum[o] += k;
+            if (fp.group[s] < 0 && fp.group[o] < 0) return;
+            fp.pairs.push_back({s, o, k});
+        });
+    }
+    for (size_t i = first; i < fp.pairs.size(); ++i) {
+        Pair& p = fp.pairs[i];
+        p.weight *= weight * 0.5 * (1.0 / sum[p.a] + 1.0 / sum[p.b]);
+    }
+}
+
+void add_rigidity_pairs(const BrushCanvas::Impl& st, FieldProblem& fp, double weight) {
+    for (const Element& e : st.arrangement.elements) {
+        const OutType& ot = st.out_types[e.type];
+        if (st.palette[ot.kappa].exemplar.types[ot.type].rigid || fp.group[e.first_sample] < 0) continue;
+        for (const auto& edge : st.palette[ot.kappa].graph[ot.type])
+            fp.pairs.push_back({e.first_sample + edge[0], e.first_sample + edge[1], weight});  // Eq. 7
+    }
+}
+
+FieldProblem build_problem(const BrushCanvas::Impl& st, const std::vector<char>& movable, bool with_weights) {
+    const Arrangement& arr = st.arrangement;
+    const int n = static_cast<int>(arr.samples.size());
+    FieldProblem fp;
+    fp.dim = st.dimension;
+    fp.group.assign(n, -1);
+    for (const Element& e : arr.elements) {
+        if (!movable[e.first_sample]) continue;
+        const OutType& ot = st.out_types[e.type];
+        const bool rigid = st.palette[ot.kappa].exemplar.types[ot.type].rigid;
+        for (int k = 0; k < e.sample_count; ++k) fp.group[e.first_sample + k] = rigid ? fp.groups : fp.groups + k;
+        fp.groups += rigid ? 1 : e.sample_count;
+    }
+    const BrushOptions& o = st.options;
+    fp.fixed = st.direction;
+    fp.align_w.assign(n, 0.0);
+    fp.align_to.assign(n, Vec3{});
+    for (int s = 0; s < n; ++s) {
+        const StrokePoint sp = closest_stroke_point(st.strokes, arr.samples[s].p);
+        const double sigma = sigma_of(st, s);
+        if (std::isfinite(sp.distance))
+            fp.align_w[s] = (with_weights ? o.w_alignment : 1.0) * std::exp(-sp.distance * sp.distance / (sigma * sigma));  // Eq. 5
+        fp.align_to[s] = sp.tangent;
+    }
+    add_continuity_pairs(st, fp, with_weights ? o.w_continuity : 1.0);
+    add_rigidity_pairs(st, fp, with_weights ? o.w_rigidity : 1.0);
+    return fp;
+}
+
+// The objective and its gradient in the free variables.
+class FieldObjective {
+public:
+    explicit FieldObjective(const FieldProblem& fp) : fp_(fp) {}
+
+    double operator()(const Eigen::VectorXd& v, Eigen::VectorXd& grad) {
+        const int d = fp_.dim;
+        units_.resize(static_cast<size_t>(fp_.groups));
+        du_.assign(static_cast<size_t>(fp_.groups), Vec3{});
+        for (int g = 0; g < fp_.groups; ++g) units_[g] = unit(v, g);
+        double f = 0.0;
+        for (size_t s = 0; s < fp_.group.size(); ++s) {
+            const int g = fp_.group[s];
+            if (g < 0) continue;
+            f += term(units_[g], fp_.align_to[s], fp_.align_w[s], du_[g]);
+        }
+        for (const Pair& p : fp_.pairs) {
+            const int ga = fp_.group[p.a], gb = fp_.group[p.b];
+            if (ga >= 0 && ga == gb) continue;  // one rigid element: identical by construction
+            const Vec3 ua = ga >= 0 ? units_[ga] : fp_.fixed[p.a], ub = gb >= 0 ? units_[gb] : fp_.fixed[p.b];
+            const Vec3 diff = ua - ub;
+            f += p.weight * squared_norm(diff);
+            if (ga >= 0) du_[ga] += diff * (2.0 * p.weight);
+            if (gb >= 0) du_[gb] -= diff * (2.0 * p.weight);
+        }
+        grad.setZero(v.size());
+        for (int g = 0; g < fp_.groups; ++g) {
+            Vec3 raw;
+            for (int c = 0; c < d; ++c) raw[c] = v[g * d + c];
+            const double len = std::max(norm(raw), 1e-12);
+            const Vec3 u = units_[g];
+            // d u / d v = (I - u u^T) / |v|
+            const Vec3 gu = (du_[g] - u * dot(u, du_[g])) / len;
+            const double stretch = squared_norm(raw) - 1.0;
+            f += kNormPull * stretch * stretch;
+            for (int c = 0; c < d; ++c) grad[g * d + c] = gu[c] + kNormPull * 4.0 * stretch * raw[c];
+        }
+        if (!(f >= best_f)) best_f = f, best_v = v;  // a failed line search leaves v at a trial point
+        return f;
+    }
+
+    double best_f = std::numeric_limits<double>::infinity();
+    Eigen::VectorXd best_v;
+
+    Vec3 unit(const Eigen::VectorXd& v, int g) const {
+        Vec3 raw;
+        for (int c = 0; c < fp_.dim; ++c) raw[c] = v[g * fp_.dim + c];
+        const double len = norm(raw);
+        return len > 1e-12 ? raw / len : Vec3{1, 0, 0};
+    }
+
+private:
+    static double term(const Vec3& u, const Vec3& target, double w, Vec3& du) {
+        if (w <= 0.0) return 0.0;
+        const Vec3 diff = u - target;
+        du += diff * (2.0 * w);
+        return w * squared_norm(diff);
+    }
+    const FieldProblem& fp_;
+    std::vector<Vec3> units_;
+    std::vector<Vec3> du_;
+};
+
+}  // namespace
+
+OrientationResult solve_orientations(BrushCanvas::Impl& st, const std::vector<char>& movable) {
+    OrientationResult result;
+    const FieldProblem fp = build_problem(st, movable, true);
+    if (fp.groups == 0) return result;
+    const int d = fp.dim;
+    Eigen::VectorXd v(fp.groups * d);
+    for (size_t s = 0; s < fp.group.size(); ++s)
+        if (fp.group[s] >= 0)
+            for (int c = 0; c < d; ++c) v[fp.group[s] * d + c] = st.direction[s][c];
+    LBFGSpp::LBFGSParam<double> param;
+    param.max_iterations = st.options.lbfgs_iterations;
+    param.epsilon = 1e-6;
+    param.epsilon_rel = 1e-6;
+    LBFGSpp::LBFGSSolver<double> solver(param);
+    FieldObjective objective(fp);
+    double fx = 0.0;
+    try {
+        const int used = solver.minimize(objective, v, fx);
+        result.bound_hit = used >= param.max_iterations;
+    } catch (const std::exception&) {
+        // The line search found no decrease (flat, at machine precision, or a BFGS direction that
+        // went uphill on this non-convex objective): the best point the
+        // objective saw is as good as this solve gets.
+    }
+    if (objective.best_v.size() == v.size()) v = objective.best_v, fx = objective.best_f;
+    for (size_t s = 0; s < fp.group.size(); ++s)
+        if (fp.group[s] >= 0) st.direction[s] = objective.unit(v, fp.group[s]);
+    result.energy = fx / static_cast<double>(std::max(1, fp.groups));
+    return result;
+}
+
+FieldEnergies field_energies(const BrushCanvas::Impl& st) {
+    const std::vector<char> none(st.arrangement.samples.size(), 0);
+    const FieldProblem fp = build_problem(st, none, false);
+    FieldEnergies e;
+    for (size_t s = 0; s < fp.group.size(); ++s) e.alignment += fp.align_w[s] * squared_norm(st.direction[s] - fp.align_to[s]);
+    // With no sample movable, every pair is skipped by build_problem; count them directly.
+    OutputNeighbours nb;
+    nb.build(st);
+    const Arrangement& arr = st.arrangement;
+    for (int s = 0; s < static_cast<int>(arr.samples.size()); ++s) {
+        const double sigma = sigma_of(st, s);
+        nb.grid.for_each_within(nb.points[s], 2.0 * sigma, [&](int o, double d2) {
+            if (o <= s || arr.samples[o].element == arr.samples[s].element) return;
+            e.continuity += std::exp(-d2 / (sigma * sigma)) * squared_norm(st.direction[s] - st.direction[o]);
+        });
+    }
+    for (const Element& el : arr.elements) {
+        const OutType& ot = st.out_types[el.type];
+        for (const auto& edge : st.palette[ot.kappa].graph[ot.type])
+            e.rigidity += squared_norm(st.direction[el.first_sample + edge[0]] - st.direction[el.first_sample + edge[1]]);
+    }
+    return e;
+}
+
+}  // namespace tessera::brush

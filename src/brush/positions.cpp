@@ -1,0 +1,149 @@
+// The assignment step of the brush solver (brush/positions.hpp).
+#include "brush/positions.hpp"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include "tessera/error.hpp"
+#include "tessera/field.hpp"
+
+namespace tessera::brush {
+
+namespace {
+
+// A small pull to the current place: keeps the system definite where an element has no
+// pair (an isolated element, a lone sample).
+constexpr double kAnchor = 0.01;
+
+// Normal equations of rows "x_b - x_a = t" with weights, over the movable samples.
+struct NormalEquations {
+    const std::vector<int>& unknown;  // sample -> unknown index, -1 when fixed
+    const std::vector<Sample>& samples;
+    std::vector<Eigen::Triplet<double>> triplets;
+    Eigen::MatrixXd rhs;
+
+    NormalEquations(const std::vector<int>& u, const std::vector<Sample>& s, int n)
+        : unknown(u), samples(s), rhs(Eigen::MatrixXd::Zero(n, 3)) {}
+
+    void add_rhs(int i, const Vec3& v, double w) {
+        for (int c = 0; c < 3; ++c) rhs(i, c) += w * v[c];
+    }
+    void difference(int a, int b, const Vec3& t, double w) {
+        const int ia = unknown[a], ib = unknown[b];
+        if (ia < 0 && ib < 0) return;
+        if (ia >= 0 && ib >= 0) {
+            triplets.emplace_back(ia, ia, w);
+            triplets.emplace_back(ib, ib, w);
+            triplets.emplace_back(ia, ib, -w);
+            triplets.emplace_back(ib, ia, -w);
+            add_rhs(ib, t, w);
+            add_rhs(ia, t, -w);
+        } else if (ib >= 0) {
+            triplets.emplace_back(ib, ib, w);
+            add_rhs(ib, samples[a].p + t, w);
+        } else {
+            triplets.emplace_back(ia, ia, w);
+            add_rhs(ia, samples[b].p - t, w);
+        }
+    }
+};
+
+void add_distribution_rows(const BrushCanvas::Impl& st, const std::vector<SampleMatch>& matches, NormalEquations& eq) {
+    const double w = st.options.w_distribution;
+    for (int s = 0; s < static_cast<int>(matches.size()); ++s) {
+        if (eq.unknown[s] < 0 || matches[s].pairs.empty()) continue;
+        const Quat frame = frame_from_direction(st.direction[s], st.dimension);
+        for (const NeighbourPair& p : matches[s].pairs) eq.difference(s, p.other, frame.rotate(p.target), w);  // Eq. 1
+    }
+}
+
+void add_conflict_rows(const BrushCanvas::Impl& st, const OutputNeighbours& nb, NormalEquations& eq) {
+    const double w = st.options.w_conflict;
+    for_each_conflict(st, nb, [&](int a, int b, double summed, double distance) {
+        const Vec3 d = st.arrangement.samples[b].p - st.arrangement.samples[a].p;
+        // Eq. 3: w_check = summed / |p^| > 1 pushes the pair out to their summed weights; a
+        // coincident pair is pushed apart along x.
+        const Vec3 target = distance > 1e-12 ? d * (summed / distance) : Vec3{summed, 0, 0};
+        eq.difference(a, b, target, w);
+    });
+}
+
+void add_graph_rows(const BrushCanvas::Impl& st, NormalEquations& eq) {
+    const double w = st.options.w_graph;
+    const Arrangement& arr = st.arrangement;
+    for (const Element& e : arr.elements) {
+        if (eq.unknown[e.first_sample] < 0) continue;
+        const OutType& ot = st.out_types[e.type];
+        for (const auto& edge : st.palette[ot.kappa].graph[ot.type]) {
+            const int a = e.first_sample + edge[0], b = e.first_sample + edge[1];
+            const Quat frame = frame_from_direction(st.direction[a], st.dimension);
+            eq.difference(a, b, frame.rotate(st.reference[b] - st.reference[a]) * e.scale, w);  // Eq. 4
+        }
+    }
+}
+
+// Rigid elements take their exact shape again (at the solved centroid, in the frame of o(s)),
+// and an element whose centre left the canvas goes back to where it was (projected onto the
+// edge instead, the elements that the incomplete neighbourhoods there push out piled up on it).
+void restore_shapes(BrushCanvas::Impl& st, const std::vector<char>& movable, const std::vector<Sample>& before) {
+    Arrangement& arr = st.arrangement;
+    for (Element& e : arr.elements) {
+        if (!movable[e.first_sample]) continue;
+        Vec3 c;
+        for (int k = 0; k < e.sample_count; ++k) c += arr.samples[e.first_sample + k].p;
+        c = c / static_cast<double>(e.sample_count);
+        const OutType& ot = st.out_types[e.type];
+        if (st.palette[ot.kappa].exemplar.types[ot.type].rigid) {
+            const Quat frame = frame_from_direction(st.direction[e.first_sample], st.dimension);
+            for (int k = 0; k < e.sample_count; ++k)
+                arr.samples[e.first_sample + k].p = c + frame.rotate(st.reference[e.first_sample + k]) * e.scale;
+        }
+        if (!st.domain.inside(c))
+            for (int k = 0; k < e.sample_count; ++k) arr.samples[e.first_sample + k].p = before[e.first_sample + k].p;
+    }
+}
+
+}  // namespace
+
+void assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, const std::vector<SampleMatch>& matches) {
+    Arrangement& arr = st.arrangement;
+    const int n = static_cast<int>(arr.samples.size());
+    std::vector<int> unknown(static_cast<size_t>(n), -1);
+    int count = 0;
+    for (int s = 0; s < n; ++s)
+        if (movable[s]) unknown[s] = count++;
+    if (count == 0) return;
+    NormalEquations eq(unknown, arr.samples, count);
+    for (int s = 0; s < n; ++s)
+        if (unknown[s] >= 0) eq.triplets.emplace_back(unknown[s], unknown[s], kAnchor), eq.add_rhs(unknown[s], arr.samples[s].p, kAnchor);
+    OutputNeighbours nb;
+    nb.build(st);
+    add_distribution_rows(st, matches, eq);
+    add_conflict_rows(st, nb, eq);
+    add_graph_rows(st, eq);
+    Eigen::SparseMatrix<double> system(count, count);
+    system.setFromTriplets(eq.triplets.begin(), eq.triplets.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
+    if (solver.info() != Eigen::Success) throw Error(ErrorKind::internal, "the brush position system is singular");
+    const Eigen::MatrixXd x = solver.solve(eq.rhs);
+    const std::vector<Sample> before = arr.samples;
+    for (int s = 0; s < n; ++s)
+        if (unknown[s] >= 0)
+            arr.samples[s].p = Vec3{x(unknown[s], 0), x(unknown[s], 1), st.dimension == 3 ? x(unknown[s], 2) : 0.0};
+    restore_shapes(st, movable, before);
+    update_element_poses(st);
+}
+
+void update_element_poses(BrushCanvas::Impl& st, int first_element) {
+    Arrangement& arr = st.arrangement;
+    for (int i = first_element; i < static_cast<int>(arr.elements.size()); ++i) {
+        Element& e = arr.elements[i];
+        if (e.locked) continue;  // never touched, not even re-rounded
+        Vec3 c;
+        for (int k = 0; k < e.sample_count; ++k) c += arr.samples[e.first_sample + k].p;
+        e.position = c / static_cast<double>(e.sample_count);
+        e.orientation = frame_from_direction(st.direction[e.first_sample], st.dimension) * st.relative[i];
+    }
+}
+
+}  // namespace tessera::brush
