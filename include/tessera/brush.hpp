@@ -73,6 +73,7 @@ struct BrushReport {
     int removed = 0;         // elements erased, or dropped in conflict with others
     int iterations = 0;      // solver iterations run
     int lbfgs_bound_hits = 0;  // L-BFGS solves stopped by BrushOptions::lbfgs_iterations
+    int solve_bound_hits = 0;  // position solves stopped by their iteration bound (400)
     bool kept_earlier = false;  // the last iteration was not the best: the best state seen was kept
     double energy = 0.0;     // E_d + E_k + E_g + E_a + E_c + E_r after the call (per sample)
     double seconds = 0.0;

@@ -12,6 +12,7 @@
 #include "convert.hpp"
 #include "option_table.hpp"
 #include "option_values.hpp"
+#include "tessera/brush.hpp"
 #include "tessera/det.hpp"
 #include "tessera/edit.hpp"
 #include "tessera/option_text.hpp"
@@ -94,6 +95,7 @@ void bind_synthesize(py::module_& m) {
             tables["det"] = describe_table(tessera::det_option_table());
             tables["pcf"] = describe_table(tessera::pcf_option_table());
             tables["grow"] = describe_table(tessera::grow_option_table());
+            tables["brush"] = describe_table(tessera::brush_option_table());  // tessera.BrushCanvas, tessera.brush
             tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)
             tables["analyze"] = describe_table(tessera::pcf_analysis_option_table());  // tessera.analyze
             // tessera.pair_correlation and tessera.metrics (`analyze --standard-pcf`, `metrics`)

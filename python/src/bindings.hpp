@@ -20,6 +20,8 @@ void bind_errors(pybind11::module_& m);
 void bind_synthesize(pybind11::module_& m);
 // Grower (on-demand growth) with options, progress and the GIL released (bind_grow.cpp).
 void bind_grow(pybind11::module_& m);
+// BrushCanvas (brushing element fields) and session replay (bind_brush.cpp).
+void bind_brush(pybind11::module_& m);
 // TileMaker, the streaming World and tiles as numpy arrays (bind_world.cpp, tile_arrays.hpp).
 void bind_world(pybind11::module_& m);
 // load, save, render, metrics, the PCF model (bind_io.cpp, bind_analysis.cpp).

@@ -13,6 +13,7 @@ PYBIND11_MODULE(_tessera, m) {
     tessera_python::bind_data(m);
     tessera_python::bind_synthesize(m);
     tessera_python::bind_grow(m);
+    tessera_python::bind_brush(m);
     tessera_python::bind_world(m);
     tessera_python::bind_io(m);
     tessera_python::bind_analysis(m);

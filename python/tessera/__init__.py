@@ -34,8 +34,8 @@ from . import world  # tessera.world: unbounded worlds of deterministic tiles
 
 __version__ = _tessera.version
 __all__ = [
-    "Arrangement", "Cancelled", "Domain", "DomainError", "Exemplar", "FileError", "Grower", "InputError",
-    "InternalError", "OptionError", "PcfModel", "TesseraError", "analyze", "exemplar", "load",
+    "Arrangement", "BrushCanvas", "Cancelled", "Domain", "DomainError", "Exemplar", "FileError", "Grower",
+    "InputError", "InternalError", "OptionError", "PcfModel", "TesseraError", "analyze", "brush", "exemplar", "load",
     "metrics", "pair_correlation", "render", "save", "synthesize",
 ]
 
@@ -244,6 +244,94 @@ class Grower(_tessera.Grower):
     def __repr__(self):
         return "<tessera.Grower %dD, %d elements, radius %.4g>" % (self._exemplar.dimension, len(self),
                                                                    self.radius)
+
+
+class BrushCanvas(_tessera.BrushCanvas):
+    """Brushing element fields (`tessera brush`, docs/brush.md): a canvas painted with elements
+    of one or several exemplars along strokes, with direction strokes that set the element
+    field where you want it, erase strokes, and fill() that completes the rest.
+
+        c = tessera.BrushCanvas(((0, 0), (40, 30)), seed=3)
+        c.add_exemplar("sticks", "examples/sticks_2d.json")
+        c.paint("sticks", [(2, 5), (20, 16), (38, 5)], width=4)   # grown along the stroke, locked
+        c.direct([(5, 25), (35, 25)])                            # the field there
+        c.fill()                                                 # the rest, along the field
+        out = c.arrangement
+
+    domain    a Domain, or (lo, hi) corners: a 2D plane region or a 3D volume.
+    options   the keywords listed in help(tessera.BrushCanvas.__init__), from the library's
+              option table, with the names, defaults and checks of `tessera brush`'s flags.
+
+    Palette entries are named; paint, fill take names (fill: one name, a list, or none for
+    the entries already on the canvas). Strokes are sequences of 2D or 3D points. Calls return
+    a report dict (added, removed, iterations, lbfgs_bound_hits, solve_bound_hits,
+    kept_earlier, energy, seconds); progress callables are called as for Grower.
+    Properties: arrangement, sample_directions (S x dim, the orientation o(s) of each sample),
+    sample_exemplars (S palette indices), palette (names), energies (dict per term).
+    """
+
+    def __init__(self, domain, **options):
+        _options.check_keywords("BrushCanvas", options, ("brush",))
+        super().__init__(_as_domain(domain, None, 1.0, "domain"), options)
+
+    _options.with_signature(__init__, ("self", "domain"), ("brush",))
+
+    def add_exemplar(self, name, exemplar):
+        """Adds an exemplar (an Exemplar or a path to one) to the palette under `name`."""
+        exemplar = _as_data(exemplar)
+        if not isinstance(exemplar, Exemplar):
+            raise OptionError("exemplar must be a tessera.Exemplar or a file path, got %s" % type(exemplar).__name__)
+        return super().add_exemplar(str(name), exemplar)
+
+    def _entry(self, name):
+        k = self.find_exemplar(str(name))
+        if k < 0:
+            raise OptionError("no palette entry named %r (the palette: %s)" % (name, ", ".join(self.palette)))
+        return k
+
+    def paint(self, entry, stroke, *, width=0.0, progress=None):
+        """Grows elements of palette entry `entry` along `stroke`, in a band `width` wide
+        (0 = stroke_width spacings), oriented along it; they are locked."""
+        return super().paint(self._entry(entry), stroke, float(width), progress)
+
+    def direct(self, stroke):
+        """A direction stroke: the element field follows it near the stroke (Eq. 5)."""
+        return super().direct(stroke)
+
+    def erase(self, stroke, *, width=0.0):
+        """Removes the elements whose centre lies within width / 2 of the stroke."""
+        return super().erase(stroke, float(width))
+
+    def fill(self, entries=None, *, progress=None):
+        """Completes the canvas from the entries already on it (or `entries`: a name or a list
+        of names), then runs the solver over every unlocked element."""
+        if entries is None:
+            names = []
+        elif isinstance(entries, str):
+            names = [entries]
+        else:
+            names = list(entries)
+        return super().fill([self._entry(n) for n in names], progress)
+
+    def optimize(self, iterations, *, progress=None):
+        """The solver alone (section 5) over every unlocked element."""
+        return super().optimize(int(iterations), progress)
+
+    def __repr__(self):
+        return "<tessera.BrushCanvas %d elements, palette %s>" % (len(self), list(self.palette))
+
+
+def brush(session, *, progress=None, **options):
+    """Replays a brush session file (`tessera brush SESSION`, docs/brush.md) and returns the
+    canvas (a _tessera.BrushCanvas with the properties of tessera.BrushCanvas). Options given
+    here override the file's "options"."""
+    _options.check_keywords("brush", options, ("brush",))
+    if progress is not None and not callable(progress):
+        raise OptionError("progress must be callable, got %r" % (progress,))
+    return _tessera.brush_session(_os.fspath(session), options, progress)
+
+
+_options.with_signature(brush, ("session",), ("brush",), ("progress",))
 
 
 def analyze(exemplar, *, sigma=0.25, step=0.1, extent=5.0):

@@ -19,8 +19,8 @@ from tessera import _tessera
 TABLES = _tessera.option_tables()
 # The commands each table makes flags for (the estimate's: analyze --standard-pcf and metrics).
 COMMANDS = {"det": ("synth",), "pcf": ("synth",), "grow": ("grow",), "edit": ("edit",), "analyze": ("analyze",),
-            "pair_correlation": ("analyze", "metrics")}
-PYTHON_METHODS = ("det", "pcf", "grow", "pair_correlation")
+            "pair_correlation": ("analyze", "metrics"), "brush": ("brush",)}
+PYTHON_METHODS = ("det", "pcf", "grow", "pair_correlation", "brush")
 
 
 def rows(methods=tuple(COMMANDS)):
@@ -42,12 +42,14 @@ def functions_of(method):
         return [tessera.Grower.__init__]
     if method == "pair_correlation":
         return [tessera.pair_correlation, tessera.metrics]
+    if method == "brush":
+        return [tessera.BrushCanvas.__init__, tessera.brush]
     return [tessera.synthesize]
 
 
 def expected_python_default(method, row):
     """The keyword's default: the row's, or None where det and pcf differ (each its own)."""
-    if method in ("grow", "pair_correlation"):
+    if method in ("grow", "pair_correlation", "brush"):
         return row["default"]
     other = [r for r in TABLES["pcf" if method == "det" else "det"] if r["name"] == row["name"]]
     return None if other and other[0]["default"] != row["default"] else row["default"]
@@ -126,7 +128,10 @@ def test_a_value_outside_the_check_names_the_keyword(item, two_class):
     value = bad_value(row)
     calls = {"grow": [lambda **kw: tessera.Grower(two_class, **kw)],
              "pair_correlation": [lambda **kw: tessera.pair_correlation(two_class, **kw),
-                                  lambda **kw: tessera.metrics(two_class, two_class, **kw)]}
+                                  lambda **kw: tessera.metrics(two_class, two_class, **kw)],
+             "brush": [lambda **kw: tessera.BrushCanvas(((0, 0), (10, 10)), **kw),
+                       lambda **kw: tessera.brush(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                                               "brush", "design_2d.json"), **kw)]}
     default = [lambda **kw: tessera.synthesize(two_class, method=method, **{"iterations": 0, **kw})]
     for call in calls.get(method, default):
         with pytest.raises(tessera.OptionError) as error:
@@ -157,6 +162,8 @@ def test_a_value_outside_the_check_names_the_flag(item, tmp_path, root):
         args = [example, "--standard-pcf", "--csv", str(out)]
     elif method == "pair_correlation":
         args = [example, example, "-o", str(out)]
+    elif method == "brush":
+        args = [str(root / "examples" / "brush" / "design_2d.json"), "-o", str(out)]
     result = subprocess.run([os.environ["TESSERA_CLI"], command, *args, row["flag"], str(value)],
                             capture_output=True, text=True)
     assert result.returncode == 2, result.stderr

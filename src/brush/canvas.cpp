@@ -284,7 +284,7 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
             } catch (const Error&) {
                 continue;  // no cell of the canvas is nearest to it
             }
-            const auto [added, dropped] = grow_entry(st, k, *region, field, region->bounds().center(), kFillTilt);
+            const auto [added, dropped] = grow_entry(st, k, *region, field, region->bounds().center(), kFillTilt, RegionEdge::open);
             r.added += added, r.removed += dropped;
         }
     }
@@ -313,7 +313,8 @@ BrushReport BrushCanvas::optimize(int iterations) {
     std::vector<Vec3> best_direction;
     for (int it = 0; it <= iterations; ++it) {
         if (it < iterations) {
-            report_progress(st, "iteration", it, iterations, best, static_cast<double>(it) / iterations, start);
+            report_progress(st, "iteration", it, iterations, std::isfinite(best) ? best : 0.0,
+                            static_cast<double>(it) / iterations, start);
             // The orientations first: the search pairs neighbourhoods in each sample's frame,
             // and the assignment rotates the pairs' targets by it, so both see the same o(s).
             const OrientationResult o = solve_orientations(st, movable);  // Eq. 5-7 (L-BFGS)
@@ -331,7 +332,7 @@ BrushReport BrushCanvas::optimize(int iterations) {
             break;
         }
         if (improved) best = now, best_arrangement = st.arrangement, best_direction = st.direction;
-        assign_positions(st, movable, matches);  // Eq. 1, 3, 4
+        if (assign_positions(st, movable, matches)) ++r.solve_bound_hits;  // Eq. 1, 3, 4
         ++r.iterations;
     }
     const Energies e = energies();

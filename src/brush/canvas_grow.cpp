@@ -74,7 +74,7 @@ Vec3 tilted_direction(const BrushCanvas::Impl& st, const OrientationField& field
 }  // namespace
 
 std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& region, const OrientationField& field,
-                               const Vec3& seed_at, double tilt) {
+                               const Vec3& seed_at, double tilt, RegionEdge edge) {
     PaletteEntry& entry = st.palette[kappa];
     GrowOptions options;
     options.seed = st.options.seed;
@@ -85,7 +85,7 @@ std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& r
     const Arrangement existing = existing_of_entry(st, kappa, region, 3.0 * entry.radius);
     if (!existing.elements.empty()) grower.set_arrangement(existing);
     else grower.seed(region.closest_inside(seed_at));
-    grower.grow(region);
+    grower.grow(region, edge);
     const Arrangement& grown = grower.arrangement();
 
     // Samples of the canvas, against which new elements are checked (those of the same entry
@@ -104,7 +104,9 @@ std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& r
         std::vector<Vec3> sample_points;
         for (int k = 0; k < e.sample_count; ++k) sample_points.push_back(grown.samples[e.first_sample + k].p);
         const std::vector<double>& w = entry.weights[e.type];
-        if (conflicts(st, grid, reach, sample_points, w)) {
+        bool inside = true;  // an open region's edge lets samples reach beyond it, never the canvas's
+        for (const Vec3& q : sample_points) inside = inside && st.domain.inside(q);
+        if (!inside || conflicts(st, grid, reach, sample_points, w)) {
             ++dropped;
             continue;
         }

@@ -16,7 +16,10 @@ namespace tessera::brush {
 // field's direction at its element's centre, tilted by up to `tilt` radians (a draw keyed by
 // the element's place in the world, so the same place gets the same tilt). Returns
 // {added, dropped in conflict}.
+// `edge`: closed for a stroke's band (every sample inside), open for fill's parts of the
+// canvas, which meet other entries' parts (centres inside; the conflict check settles the
+// border, where a closed edge left a gap as wide as an element).
 std::pair<int, int> grow_entry(BrushCanvas::Impl& state, int kappa, const Domain& region, const OrientationField& field,
-                               const Vec3& seed_at, double tilt = 0.0);
+                               const Vec3& seed_at, double tilt = 0.0, RegionEdge edge = RegionEdge::closed);
 
 }  // namespace tessera::brush

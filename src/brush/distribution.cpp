@@ -76,7 +76,6 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
     const OutType& ot = st.out_types[e.type];
     const PaletteEntry& entry = st.palette[ot.kappa];
     m.pairs.clear();
-    m.neighbourhood = -1;
     m.cost = 0.0;
     const Quat frame = frame_from_direction(st.direction[s], st.dimension);
     const Quat inverse = frame.conjugate();
@@ -92,11 +91,23 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
     const double r2 = entry.radius * entry.radius;
     const double pair_limit2 = kPairThreshold * kPairThreshold * entry.spacing * entry.spacing;
     double best = std::numeric_limits<double>::infinity();
-    for (int candidate : entry.by_type[ot.type][arr.samples[s].sample_id]) {
-        const double c =
-            neighbourhood_cost(entry.neighbourhoods[candidate], own_weight, scratch.local, r2, best, place, scratch);
+    const int previous = m.neighbourhood;  // the last iteration's match: tried first, its cost prunes the rest
+    const std::vector<int>& candidates = entry.by_type[ot.type][arr.samples[s].sample_id];
+    m.neighbourhood = -1;
+    auto consider = [&](int candidate) {
+        const InputNeighbourhood& in = entry.neighbourhoods[candidate];
+        // Output neighbours beyond the input's count are unpaired whatever the pairing.
+        const double floor = r2 * static_cast<double>(std::max<std::ptrdiff_t>(
+                                      0, static_cast<std::ptrdiff_t>(scratch.local.size()) -
+                                             static_cast<std::ptrdiff_t>(in.offsets.size())));
+        if (floor >= best) return;
+        const double c = neighbourhood_cost(in, own_weight, scratch.local, r2, best, place, scratch);
         if (c < best) best = c, m.neighbourhood = candidate, scratch.best_paired = scratch.paired;
-    }
+    };
+    const bool known = std::find(candidates.begin(), candidates.end(), previous) != candidates.end();
+    if (known) consider(previous);
+    for (int candidate : candidates)
+        if (candidate != previous || !known) consider(candidate);
     if (m.neighbourhood < 0) return;
     m.cost = best;
     const InputNeighbourhood& in = entry.neighbourhoods[m.neighbourhood];

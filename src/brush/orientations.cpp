@@ -35,10 +35,14 @@ struct FieldProblem {
 };
 
 double sigma_of(const BrushCanvas::Impl& st, int s) { return st.options.sigma * st.spacing_of_sample(s); }
+double neighbourhood_radius(const BrushCanvas::Impl& st, int s) {
+    return st.palette[st.kappa_of_element(st.arrangement.samples[s].element)].radius;
+}
 
-// Eq. 6, with each sample's kernel weights normalised to sum to 1 (the mean of the pair's two
-// sums): the term then weighs as much for a sample in a crowd as for one alone, against its
-// alignment and distribution terms.
+// Eq. 6 over each sample's neighbourhood N_s (the samples of other elements within the radius
+// of Eq. 1), weighted by exp(-d^2 / sigma^2), with each sample's weights normalised to sum to 1
+// (the mean of the pair's two sums): the term then weighs as much for a sample in a crowd as
+// for one alone, against its alignment term.
 void add_continuity_pairs(const BrushCanvas::Impl& st, FieldProblem& fp, double weight) {
     OutputNeighbours nb;
     nb.build(st);
@@ -46,8 +50,8 @@ void add_continuity_pairs(const BrushCanvas::Impl& st, FieldProblem& fp, double 
     const size_t first = fp.pairs.size();
     std::vector<double> sum(arr.samples.size(), 0.0);
     for (int s = 0; s < static_cast<int>(arr.samples.size()); ++s) {
-        const double sigma = sigma_of(st, s);
-        nb.grid.for_each_within(nb.points[s], 2.0 * sigma, [&](int o, double d2) {
+        const double sigma = sigma_of(st, s), radius = neighbourhood_radius(st, s);
+        nb.grid.for_each_within(nb.points[s], radius, [&](int o, double d2) {
             if (o <= s || arr.samples[o].element == arr.samples[s].element) return;
             const double k = std::exp(-d2 / (sigma * sigma));
             sum[s] += k, sum[o] += k;
@@ -206,7 +210,7 @@ FieldEnergies field_energies(const BrushCanvas::Impl& st) {
     const Arrangement& arr = st.arrangement;
     for (int s = 0; s < static_cast<int>(arr.samples.size()); ++s) {
         const double sigma = sigma_of(st, s);
-        nb.grid.for_each_within(nb.points[s], 2.0 * sigma, [&](int o, double d2) {
+        nb.grid.for_each_within(nb.points[s], neighbourhood_radius(st, s), [&](int o, double d2) {
             if (o <= s || arr.samples[o].element == arr.samples[s].element) return;
             e.continuity += std::exp(-d2 / (sigma * sigma)) * squared_norm(st.direction[s] - st.direction[o]);
         });

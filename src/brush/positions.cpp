@@ -2,7 +2,7 @@
 #include "brush/positions.hpp"
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
 
 #include "tessera/error.hpp"
 #include "tessera/field.hpp"
@@ -14,6 +14,8 @@ namespace {
 // A small pull to the current place: keeps the system definite where an element has no
 // pair (an isolated element, a lone sample).
 constexpr double kAnchor = 0.01;
+// Bound on the conjugate-gradient iterations of one position solve (reported when hit).
+constexpr int kSolveIterations = 400;
 
 // Normal equations of rows "x_b - x_a = t" with weights, over the movable samples.
 struct NormalEquations {
@@ -105,14 +107,14 @@ void restore_shapes(BrushCanvas::Impl& st, const std::vector<char>& movable, con
 
 }  // namespace
 
-void assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, const std::vector<SampleMatch>& matches) {
+bool assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, const std::vector<SampleMatch>& matches) {
     Arrangement& arr = st.arrangement;
     const int n = static_cast<int>(arr.samples.size());
     std::vector<int> unknown(static_cast<size_t>(n), -1);
     int count = 0;
     for (int s = 0; s < n; ++s)
         if (movable[s]) unknown[s] = count++;
-    if (count == 0) return;
+    if (count == 0) return false;
     NormalEquations eq(unknown, arr.samples, count);
     for (int s = 0; s < n; ++s)
         if (unknown[s] >= 0) eq.triplets.emplace_back(unknown[s], unknown[s], kAnchor), eq.add_rhs(unknown[s], arr.samples[s].p, kAnchor);
@@ -123,15 +125,30 @@ void assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, c
     add_graph_rows(st, eq);
     Eigen::SparseMatrix<double> system(count, count);
     system.setFromTriplets(eq.triplets.begin(), eq.triplets.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
-    if (solver.info() != Eigen::Success) throw Error(ErrorKind::internal, "the brush position system is singular");
-    const Eigen::MatrixXd x = solver.solve(eq.rhs);
+    // Conjugate gradients from the current positions, bounded: the pairs of a 3D neighbourhood
+    // make a sparse Cholesky factor fill in (it took a third of a volume's fill), while the
+    // system is symmetric positive definite (the anchor) and the start is close to the answer.
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
+    solver.setMaxIterations(kSolveIterations);
+    solver.setTolerance(1e-8);
+    solver.compute(system);
+    Eigen::MatrixXd start(count, 3);
+    for (int s = 0; s < n; ++s)
+        if (unknown[s] >= 0)
+            for (int c = 0; c < 3; ++c) start(unknown[s], c) = arr.samples[s].p[c];
+    Eigen::MatrixXd x(count, 3);
+    bool bound_hit = false;
+    for (int c = 0; c < 3; ++c) {
+        x.col(c) = solver.solveWithGuess(eq.rhs.col(c), start.col(c));
+        bound_hit = bound_hit || solver.info() != Eigen::Success;
+    }
     const std::vector<Sample> before = arr.samples;
     for (int s = 0; s < n; ++s)
         if (unknown[s] >= 0)
             arr.samples[s].p = Vec3{x(unknown[s], 0), x(unknown[s], 1), st.dimension == 3 ? x(unknown[s], 2) : 0.0};
     restore_shapes(st, movable, before);
     update_element_poses(st);
+    return bound_hit;
 }
 
 void update_element_poses(BrushCanvas::Impl& st, int first_element) {

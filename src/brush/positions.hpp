@@ -2,7 +2,8 @@
 // movable samples that best meet, in the least-squares sense, the distribution term's pairs
 // (Eq. 1, the matches of the search), the conflict check (Eq. 3) and the graph similarity
 // (Eq. 4), for the current orientations. Rigid elements are then put back to their exact
-// shape, and elements whose centre left the canvas are moved back in.
+// shape, and elements whose centre left the canvas are moved back in. Returns true when the
+// solve stopped at its iteration bound.
 #pragma once
 
 #include <vector>
@@ -11,7 +12,7 @@
 
 namespace tessera::brush {
 
-void assign_positions(BrushCanvas::Impl& state, const std::vector<char>& movable,
+bool assign_positions(BrushCanvas::Impl& state, const std::vector<char>& movable,
                       const std::vector<SampleMatch>& matches);
 
 // Element poses from their samples: position = centroid, orientation = o(first sample)'s
