@@ -14,6 +14,7 @@
 #include "brush/palette.hpp"
 #include "brush/positions.hpp"
 #include "brush/strokes.hpp"
+#include "core/progress_span.hpp"
 #include "tessera/error.hpp"
 #include "tessera/option_table.hpp"
 
@@ -59,6 +60,20 @@ void report_progress(const BrushCanvas::Impl& st, const std::string& stage, int 
     e.fraction = fraction;
     if (!st.progress(e)) throw Cancelled();
 }
+
+// While alive, the canvas's listener sees a part of the call as [from, to] of the whole.
+struct ProgressPart {
+    BrushCanvas::Impl& state;
+    Progress whole;
+    ProgressPart(BrushCanvas::Impl& s, double from, double to, const char* done_stage)
+        : state(s), whole(s.progress) {
+        state.progress = core::progress_within(whole, from, to, done_stage);
+    }
+    ~ProgressPart() { state.progress = std::move(whole); }
+};
+
+// Fill's share of its progress spent growing; the solver's iterations take the rest.
+constexpr double kFillGrowthShare = 0.3;
 
 double stroke_half_width(const BrushCanvas::Impl& st, const Stroke& stroke, int kappa) {
     const double spacing = kappa >= 0 ? st.palette[kappa].spacing : 1.0;
@@ -165,7 +180,10 @@ BrushReport BrushCanvas::paint(int exemplar, const Stroke& stroke) {
     const OrientationField field =
         stroke.points.size() >= 2 ? OrientationField::polyline(stroke.points) : interpolate_strokes(st.domain, st.strokes, st.palette[exemplar].spacing, st.options.sigma * st.palette[exemplar].spacing);
     const int first = static_cast<int>(st.arrangement.elements.size());
-    const auto [added, dropped] = grow_entry(st, exemplar, band, field, stroke.points.front());
+    const auto [added, dropped] = [&] {
+        const ProgressPart part(st, 0.0, 0.95, "paint");
+        return grow_entry(st, exemplar, band, field, stroke.points.front());
+    }();
     for (int i = first; i < static_cast<int>(st.arrangement.elements.size()); ++i) st.arrangement.elements[i].locked = true;
     if (stroke.points.size() >= 2) st.strokes.push_back(stroke);
     BrushReport r;
@@ -271,11 +289,16 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
     const OrientationField field = interpolate_strokes(st.domain, st.strokes, spacing, st.options.sigma * spacing);
     BrushReport r;
     if (!any_present) {  // nothing of the chosen entries yet: the first grows over the canvas
+        const ProgressPart part(st, 0.0, kFillGrowthShare, "fill");
         const auto [added, dropped] = grow_entry(st, exemplars.front(), st.domain, field, st.domain.bounds().center(), kFillTilt);
         r.added += added, r.removed += dropped;
     } else {
-        for (int k = 0; k < static_cast<int>(entries.size()); ++k) {
+        const int parts = static_cast<int>(std::count(entries.begin(), entries.end(), 1));
+        for (int k = 0, part = 0; k < static_cast<int>(entries.size()); ++k) {
             if (!entries[k]) continue;
+            const double share = kFillGrowthShare / parts;
+            const ProgressPart progress_part(st, share * part, share * (part + 1), "fill");
+            ++part;
             std::optional<Domain> region;
             try {  // the cells nearer to an element of entry k than to any other entry's
                 region = Domain::region(
@@ -288,7 +311,10 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
             r.added += added, r.removed += dropped;
         }
     }
-    const BrushReport solved = optimize(st.options.iterations);
+    const BrushReport solved = [&] {
+        const ProgressPart part(st, kFillGrowthShare, 1.0, "done");
+        return optimize(st.options.iterations);
+    }();
     r.iterations = solved.iterations;
     r.lbfgs_bound_hits = solved.lbfgs_bound_hits;
     r.energy = solved.energy;

@@ -174,3 +174,27 @@ TEST(Brush, BadSessionFilesAreClearErrors) {
     one.points = {{1, 1, 0}};
     EXPECT_THROW(canvas.direct(one), Error);  // a direction needs two points
 }
+
+// A studio's progress bar fills once: fill's growth and its solver's iterations are parts of
+// one call, so the fraction never falls back and "done" comes only at the end.
+TEST(Brush, FillProgressOnlyRisesAndIsDoneOnceAtTheEnd) {
+    BrushOptions o;
+    o.iterations = 3;
+    BrushCanvas canvas(Domain::box({0, 0, 0}, {30, 30, 0}, 2), o);
+    const int k = canvas.add_exemplar("dots", load(examples + "poisson_disk_2d.json"));
+    Stroke stroke;
+    stroke.points = {{3, 15, 0}, {27, 15, 0}};
+    canvas.paint(k, stroke);
+    std::vector<ProgressEvent> events;
+    canvas.set_progress([&](const ProgressEvent& e) {
+        events.push_back(e);
+        return true;
+    });
+    canvas.fill();
+    ASSERT_GE(events.size(), 4u);
+    for (size_t i = 1; i < events.size(); ++i)
+        EXPECT_GE(events[i].fraction, events[i - 1].fraction) << events[i - 1].stage << " -> " << events[i].stage;
+    EXPECT_EQ(events.back().stage, "done");
+    EXPECT_DOUBLE_EQ(events.back().fraction, 1.0);
+    for (size_t i = 0; i + 1 < events.size(); ++i) EXPECT_NE(events[i].stage, "done") << "event " << i;
+}
