@@ -153,5 +153,6 @@ Subcommand add_analyze_command(CLI::App& app);
 Subcommand add_grow_command(CLI::App& app);
 Subcommand add_brush_command(CLI::App& app);
 Subcommand add_world_command(CLI::App& app);
+Subcommand add_studio_command(CLI::App& app);
 
 }  // namespace tessera_cli
