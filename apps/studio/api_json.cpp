@@ -165,10 +165,6 @@ Json brush_options_json(const tessera::BrushOptions& options) {
     return out;
 }
 
-bool is_long_op(const std::string& op) {
-    return op == "paint" || op == "fill" || op == "optimize";
-}
-
 OpRequest parse_op(const Json& body, int dimension, const std::string& where) {
     if (!body.is_object()) bad_request((where.empty() ? "the op" : where) + ": expected an object");
     OpRequest op;

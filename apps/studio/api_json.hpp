@@ -58,8 +58,6 @@ OpRequest parse_op(const Json& body, int dimension, const std::string& where = "
 // The op as a session file stores it (docs/brush.md, "Session files"): only the members its
 // kind uses, points of `dimension` numbers.
 Json op_json(const OpRequest& op, int dimension);
-// Fill, optimize and paint can take long: they run as jobs.
-bool is_long_op(const std::string& op);
 
 Json report_json(const tessera::BrushReport& report);
 

@@ -101,8 +101,8 @@ void add_palette(ServerContext& ctx, const RouteRequest& r, httplib::Response& r
 void run_op(ServerContext& ctx, const RouteRequest& r, httplib::Response& res) {
     const auto session = find_session(ctx.sessions, r.params[0]);
     OpRequest op = parse_op(parse_body(r.body), session->dimension);
-    if (!is_long_op(op.op)) {
-        send_json(res, 200, {{"report", apply_now(*session, op)}});
+    if (runs_in_request(*session, op)) {
+        send_json(res, 200, apply_now(*session, op));
         return;
     }
     std::vector<OpRequest> ops;

@@ -129,6 +129,9 @@ void StudioServer::State::setup() {
     http.set_keep_alive_timeout(2);  // an idle connection holds a worker; short, so a stop is quick
     http.set_read_timeout(10, 0);
     http.set_write_timeout(10, 0);
+    // Answers are small and awaited one at a time by a stroke being drawn: without
+    // TCP_NODELAY, Nagle's algorithm meeting the browser's delayed ACK holds some for ~40 ms.
+    http.set_tcp_nodelay(true);
     // SO_REUSEADDR only: httplib's default also sets SO_REUSEPORT, which lets a second
     // server share the port silently.
     http.set_socket_options([](socket_t sock) {

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 
+#include "apps/studio/canvas_changes.hpp"
 #include "apps/studio/canvas_spec.hpp"
+#include "apps/studio/paint_estimate.hpp"
 #include "apps/studio/static_files.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
@@ -87,6 +89,7 @@ void add_palette_entry(Session& session, PaletteEntry entry, const tessera::Exem
     std::lock_guard lock(session.mutex);
     check_idle(session);
     library_call([&] { return session.canvas.add_exemplar(entry.name, exemplar); });
+    entry.density = exemplar_density(exemplar);
     session.palette.push_back(std::move(entry));
 }
 
@@ -107,9 +110,21 @@ Json apply_now(Session& session, const OpRequest& request) {
     std::lock_guard lock(session.mutex);
     check_idle(session);
     const ResolvedOp op = resolve_op(session, request);
+    const CanvasMark before = mark_canvas(session.canvas);
     const tessera::BrushReport report = library_call([&] { return apply_op(session.canvas, op); });
     session.ops.push_back(op_json(op.request, session.dimension));
-    return report_json(report);
+    return {{"report", report_json(report)}, {"changes", appended_since(session.canvas, before)}};
+}
+
+bool runs_in_request(Session& session, const OpRequest& request) {
+    if (request.op == "direction" || request.op == "erase") return true;
+    if (request.op != "paint") return false;
+    std::lock_guard lock(session.mutex);
+    const auto entry = std::find_if(session.palette.begin(), session.palette.end(),
+                                    [&](const PaletteEntry& e) { return e.name == request.palette.front(); });
+    if (entry == session.palette.end()) return false;  // the job will say it is unknown
+    return expected_paint_elements(request.stroke, entry->density, session.dimension,
+                                   session.canvas.options().stroke_width) <= max_inline_paint_elements;
 }
 
 JobRunner::Work prepare_job(const std::shared_ptr<Session>& session, std::vector<OpRequest> requests,

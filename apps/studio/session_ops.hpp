@@ -34,8 +34,13 @@ struct ResolvedOp {
 // 400 naming a palette name the session does not have.
 ResolvedOp resolve_op(const Session& session, OpRequest request);
 
-// direction and erase: applied now; returns the report. 409 while a job runs.
+// Applies `request` now, in the caller's thread; returns {"report", "changes"} (the elements
+// it appended, canvas_changes.hpp, or null when it changed more). 409 while a job runs.
 Json apply_now(Session& session, const OpRequest& request);
+// Whether `request` runs in the request thread (apply_now) rather than as a job: direction
+// and erase always, paint when it makes few elements (paint_estimate.hpp); fill and optimize
+// never.
+bool runs_in_request(Session& session, const OpRequest& request);
 
 // Marks the session busy with job `job_id` and returns the work that applies `ops` in order
 // on a copy of the canvas and commits it (canvas and ops) at the end; 409 while another job

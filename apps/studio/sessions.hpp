@@ -36,6 +36,7 @@ private:
 struct PaletteEntry {
     std::string name;
     Json source;  // "relative/path.json" under the root, or the inline exemplar object
+    double density = 0.0;  // its exemplar's elements per unit area or volume (paint_estimate.hpp)
 };
 
 // Everything below `mutex` is guarded by it.

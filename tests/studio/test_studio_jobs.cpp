@@ -1,4 +1,5 @@
-// Operations as jobs: a paint runs to done and shows in the session; a second op while one
+// Operations and jobs: a small paint answers at once with the elements it appended, a large
+// one runs as a job to done; a second op while one
 // runs is 409; a cancelled fill ends "cancelled" with the canvas as it was; progress streams
 // as server-sent events until the job ends; a session file reloads to the same arrangement;
 // exports come back in their formats.
@@ -14,25 +15,45 @@ using Json = nlohmann::json;
 
 class StudioJobs : public tessera::test::StudioFixture {
 protected:
-    std::string painted_session() {
+    // A canvas with one small paint stroke, run in the request (paint_estimate.hpp): its answer
+    // carries the elements it appended.
+    std::string painted_session(Json* answer = nullptr) {
         const std::string id = sticks_session("box:0,0,40,20");
         int status = 0;
-        const Json started = post(
+        const Json painted = post(
             "/api/sessions/" + id + "/ops",
             {{"op", "paint"}, {"palette", "sticks"}, {"stroke", {{4, 10}, {36, 10}}}, {"width", 4}}, &status);
-        EXPECT_EQ(status, 202) << started.dump();
-        const Json end = wait_for_job(started.value("job", ""));
-        EXPECT_EQ(end.value("state", ""), "done") << end.dump();
+        EXPECT_EQ(status, 200) << painted.dump();
+        if (answer) *answer = painted;
         return id;
     }
 };
 
-TEST_F(StudioJobs, APaintRunsToDoneAndShowsInTheSession) {
-    const std::string id = painted_session();
+TEST_F(StudioJobs, ASmallPaintAnswersWithTheElementsItAddedAsTheSessionShowsThem) {
+    Json painted;
+    const std::string id = painted_session(&painted);
     int status = 0;
     const Json session = get("/api/sessions/" + id, &status);
     ASSERT_EQ(status, 200);
     EXPECT_GT(session["arrangement"]["elements"].size(), 10u);
+    const Json& changes = painted["changes"];
+    ASSERT_TRUE(changes.is_object()) << painted.dump();
+    EXPECT_EQ(changes["first_element"], 0);
+    EXPECT_EQ(changes["arrangement"]["elements"], session["arrangement"]["elements"]);
+    EXPECT_EQ(changes["arrangement"]["types"], session["arrangement"]["types"]);
+    EXPECT_EQ(changes["directions"], session["directions"]);
+    EXPECT_EQ(painted["report"]["added"], session["arrangement"]["elements"].size());
+    // A second stroke: only its own elements come back, after the first stroke's.
+    const Json second = post("/api/sessions/" + id + "/ops",
+                             {{"op", "paint"}, {"palette", "sticks"}, {"stroke", {{4, 3}, {36, 3}}}, {"width", 3}},
+                             &status);
+    ASSERT_EQ(status, 200) << second.dump();
+    const Json after = get("/api/sessions/" + id)["arrangement"]["elements"];
+    const size_t first = session["arrangement"]["elements"].size();
+    ASSERT_EQ(second["changes"]["first_element"], first);
+    ASSERT_EQ(after.size(), first + second["changes"]["arrangement"]["elements"].size());
+    for (size_t k = first; k < after.size(); ++k)
+        EXPECT_EQ(after[k], second["changes"]["arrangement"]["elements"][k - first]);
     EXPECT_EQ(session.value("ops", 0), 1);
     EXPECT_TRUE(session["job"].is_null());
     EXPECT_EQ(session["directions"].size(), session["exemplars"].size());
@@ -46,6 +67,18 @@ TEST_F(StudioJobs, APaintRunsToDoneAndShowsInTheSession) {
     post("/api/sessions/" + id + "/ops", {{"op", "paint"}, {"palette", "sticks"}, {"stroke", {{0, 0, 1}}}},
          &status);
     EXPECT_EQ(status, 400);  // z on a 2D canvas
+}
+
+TEST_F(StudioJobs, ALargePaintRunsAsAJobToDone) {
+    const std::string id = sticks_session("box:0,0,200,200");
+    int status = 0;
+    const Json started = post("/api/sessions/" + id + "/ops",
+                              {{"op", "paint"}, {"palette", "sticks"}, {"stroke", {{10, 100}, {190, 100}}}, {"width", 60}},
+                              &status);
+    ASSERT_EQ(status, 202) << started.dump();
+    const Json end = wait_for_job(started.value("job", ""));
+    EXPECT_EQ(end.value("state", ""), "done") << end.dump();
+    EXPECT_GT(get("/api/sessions/" + id)["arrangement"]["elements"].size(), 400u);
 }
 
 TEST_F(StudioJobs, ACancelledFillEndsCancelledWithTheCanvasAsItWas) {

@@ -6,10 +6,12 @@
 // ended and the session was read back, and when the frame with its elements was drawn.
 // Prints, per run and overall: pointer event -> elements drawn (from the segment's first and
 // last events), the parts of it (waiting for the previous segment, server, drawing), and the
-// time from the pointer's release to the stroke's last elements on screen.
+// time from the pointer's release to the stroke's last elements on screen. Then, `--runs`
+// times, "fill the rest" of a canvas sized for ~2,000 poisson_disk_2d dots after one paint
+// stroke: the time from the click on "Fill the rest" to the filled canvas drawn.
 //   node tests/web/stroke_latency.mjs [--runs N] [--json FILE]     (TESSERA_BIN=build/bin/tessera)
 import { writeFileSync } from 'node:fs';
-import { startServer, launchBrowser, openStudio, waitIdle, newCanvas, choose, setTool, setWidth, withTimeout } from './studio_harness.mjs';
+import { startServer, launchBrowser, openStudio, waitIdle, newCanvas, choose, setTool, setWidth, drawStroke, withTimeout } from './studio_harness.mjs';
 
 const args = process.argv.slice(2);
 const runs = +(args[args.indexOf('--runs') + 1] || 3) || 3;
@@ -25,6 +27,7 @@ const fmt = (st) => `mean ${st.mean.toFixed(0)} · median ${st.median.toFixed(0)
 const server = await startServer();
 let browser = null;
 const results = [];
+const fills = [];
 try {
   browser = await launchBrowser();
   const { page } = await openStudio(browser, server.url);
@@ -69,6 +72,31 @@ try {
     const r = results[results.length - 1];
     console.log(`run ${run + 1}: ${elements} elements in ${r.segments} segments (${r.errors} failed); first elements on screen ${r.firstElementsAfter.toFixed(0)} ms after the press; last ${r.releaseToLast.toFixed(0)} ms after the release`);
   }
+  for (let run = 0; run < runs; ++run) {
+    // poisson_disk_2d: 110 dots in 10 x 10, so a side of sqrt(2000 / 1.1) holds ~2,000.
+    const side = Math.sqrt(2000 / 1.1);
+    await newCanvas(page, `box:0,0,${side.toFixed(2)},${side.toFixed(2)}`);
+    await choose(page, 'poisson_disk_2d');
+    await setTool(page, 'paint');
+    await setWidth(page, 4);
+    await drawStroke(page, Array.from({ length: 30 }, (_, i) => [0.3 * side + i * 0.4 * side / 29, 0.5 * side]));
+    await withTimeout(waitIdle(page, 120000), 130000, 'the stroke being applied');
+    const ms = await page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          const t0 = performance.now();
+          document.getElementById('fill').click();
+          const check = () => {
+            if (window.__tessera.busy()) requestAnimationFrame(check);
+            else requestAnimationFrame(() => resolve(performance.now() - t0));
+          };
+          requestAnimationFrame(check);
+        }),
+    );
+    const elements = await page.evaluate(() => window.__tessera.store.state.view.model.elements.length);
+    fills.push({ run, ms, elements });
+    console.log(`fill run ${run + 1}: ${elements} elements on screen ${ms.toFixed(0)} ms after the click`);
+  }
 } finally {
   if (browser) await browser.close().catch(() => {});
   await server.stop();
@@ -83,9 +111,11 @@ console.log(`  pointer event -> its elements drawn (segment's last event):  ${fm
 console.log(`  per element (first event of its segment -> drawn):           ${fmt(stats(weighted))}`);
 console.log(`    waiting for the previous segment: ${fmt(stats(all('waiting')))}`);
 console.log(`    server (POST op, job, GET session): ${fmt(stats(all('server')))}`);
-console.log(`      POST /ops (answers 202 + job id): ${fmt(stats(all('post')))}`);
-console.log(`      the paint job (events stream):  ${fmt(stats(all('job')))}`);
-console.log(`      GET /sessions/ID (arrangement): ${fmt(stats(all('read')))}`);
+console.log(`      POST /ops (paint in the request): ${fmt(stats(all('post')))}`);
+console.log(`      a paint job (large segments):   ${fmt(stats(all('job')))}`);
+console.log(`      GET /sessions/ID (no changes):  ${fmt(stats(all('read')))}`);
 console.log(`    drawing (next frames):            ${fmt(stats(all('drawing')))}`);
 console.log(`  release -> last elements drawn: ${results.map((r) => r.releaseToLast.toFixed(0)).join(', ')} ms`);
-if (jsonOut) writeFileSync(jsonOut, `${JSON.stringify(results, null, 1)}\n`);
+if (fills.length)
+  console.log(`fill the rest, ~2,000 poisson_disk_2d dots, click -> drawn: ${fmt(stats(fills.map((f) => f.ms)))}; elements ${fills.map((f) => f.elements).join(', ')}`);
+if (jsonOut) writeFileSync(jsonOut, `${JSON.stringify({ strokes: results, fills }, null, 1)}\n`);

@@ -70,6 +70,37 @@ export function createSession(store) {
     });
   }
 
+  // Appends what an operation answered it added (its "changes", docs/studio.md "Live
+  // painting") to the view, instead of reading the whole session back. False when the view
+  // is not the canvas the changes follow (then the caller reads the session).
+  function appendChanges(changes) {
+    const view = store.state.view;
+    if (!changes || !view || !view.model) return false;
+    const model = view.model;
+    const names = (changes.arrangement.types || []).map((t) => t.name);
+    if (changes.first_element !== model.elements.length || changes.first_sample !== view.directions.length) return false;
+    if (names.length !== model.types.length || names.some((n, i) => n !== model.types[i].name)) return false;
+    const added = changes.arrangement.elements && changes.arrangement.elements.length ? readDocument(changes.arrangement).elements : [];
+    const bounds = { min: [...model.bounds.min], max: [...model.bounds.max] };
+    for (const e of added)
+      for (const p of e.samples)
+        for (let a = 0; a < 3; ++a) {
+          bounds.min[a] = Math.min(bounds.min[a], p[a]);
+          bounds.max[a] = Math.max(bounds.max[a], p[a]);
+        }
+    store.set({
+      view: {
+        ...view,
+        model: { ...model, elements: model.elements.concat(added), bounds },
+        directions: view.directions.concat(changes.directions),
+        sampleEntries: view.sampleEntries.concat(changes.exemplars),
+        fetchedAt: performance.now(),
+        fetchMs: 0,
+      },
+    });
+    return true;
+  }
+
   function allOps() {
     return store.state.groups.flat();
   }
@@ -117,14 +148,14 @@ export function createSession(store) {
       if (job.state === 'failed') throw new Error(job.error || `${op.op} failed`);
       result = { report: job.report, state: job.state };
     } else {
-      result = { report: answer.report, state: 'done' };
+      result = { report: answer.report, state: 'done', changes: answer.changes };
     }
     if (result.state === 'done') {
       if (openGroup) openGroup.push(op);
       else setGroups([...store.state.groups, [op]], []);
     }
     const t2 = performance.now();
-    await refresh();
+    if (!appendChanges(result.changes)) await refresh();
     // Where the time went (the stroke latency benchmark prints it).
     result.timings = { postMs: t1 - t0, jobMs: t2 - t1, readMs: performance.now() - t2 };
     return result;

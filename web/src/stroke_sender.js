@@ -1,11 +1,13 @@
 // stroke_sender.js — a paint stroke sent while it is drawn: the points are collected as the
-// pointer moves and sent in segments (every `intervalMs` or every `maxPoints` new points,
-// whichever comes first, one segment in flight at a time, each segment starting at the last
-// point of the one before) as paint operations, so elements appear along the stroke while
-// the user is still drawing. Records, per segment, the time from its pointer events to its
+// pointer moves and sent in segments (by default each new point as soon as the segment
+// before has been drawn; or every `intervalMs` or `maxPoints` new points, whichever comes
+// first; one segment in flight at a time, each starting at the last point of the one before)
+// as paint operations, so elements appear along the stroke while the user is still drawing.
+// A small segment's paint answers with the elements it added (docs/studio.md, "Live
+// painting"), so a point's elements are drawn about one round trip and one frame after it. Records, per segment, the time from its pointer events to its
 // elements being drawn (window.__tessera.metrics.paint; tests/web/stroke_latency.mjs).
 
-export function createStrokeSender({ send, afterDraw, intervalMs = 150, maxPoints = 8, metrics }) {
+export function createStrokeSender({ send, afterDraw, intervalMs = 0, maxPoints = 1, metrics }) {
   let points = [];
   let times = [];
   let sent = 0; // points[0..sent) have been sent
@@ -71,7 +73,7 @@ export function createStrokeSender({ send, afterDraw, intervalMs = 150, maxPoint
       sent = 0;
       ended = false;
       lastSendAt = performance.now();
-      timer = setInterval(() => maybeSend(false), Math.max(intervalMs / 3, 20));
+      timer = setInterval(() => maybeSend(false), Math.max(intervalMs / 3, 16));
     },
     add(point, timeStamp) {
       points.push(point);

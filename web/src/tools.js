@@ -4,7 +4,9 @@
 // Works for both views: they hand over world points ([x, y, 0] in 2D, [x, y, z] in 3D).
 import { createStrokeSender } from './stroke_sender.js';
 
-const nextFrame = () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+// The views draw in the animation frame they asked for on the store's change; a callback
+// asked for after theirs runs in that same frame, after the drawing.
+const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
 
 export function createTools(store, session, palette, metrics) {
   let drawing = null; // {tool, points, entry}
