@@ -262,6 +262,14 @@ test('studio: paint, direct, fill and export in a real browser', { timeout: 3000
     assert.ok(painted > erased, `painting with the merged entry: ${painted} elements (was ${erased})`);
     const types = await page.evaluate(() => window.__tessera.store.state.view.model.types.map((x) => x.name));
     assert.ok(types.some((n) => /\(sticks_2d \+ poisson_disk_2d\)/.test(n)), `types keep their names per entry: ${types}`);
+    // The entry is a mix: the stroke grows sticks and dots together, not one of them.
+    const paintedTypes = await page.evaluate((from) => {
+      const m = window.__tessera.store.state.view.model;
+      return [...new Set(m.elements.slice(from).map((e) => m.types[e.type].name))];
+    }, erased);
+    for (const kind of ['stick', 'dot'])
+      assert.ok(paintedTypes.some((n) => n.startsWith(kind) && /sticks_2d \+ poisson_disk_2d/.test(n)),
+        `the merged stroke painted ${kind}s too: ${paintedTypes}`);
 
     await page.setInputFiles('#palette-file', join(sourceDir, 'examples', 'two_class_2d.json'));
     await page.waitForSelector('.swatch[data-name="two_class_2d 2"].active', { timeout: 10000 });

@@ -112,71 +112,122 @@ export function domainMeasure(doc) {
   return m;
 }
 
-// Several exemplars as one: each placed to the right of the previous one's domain box,
-// elements and types kept (a type named like an earlier one but differing in sample count
-// is renamed "name (entry)"). Domains become the box around all; ids are dropped (renumbered
-// by the reader). Only box-like domains are merged; others use their elements' bounds.
+// Several exemplars as one mixed exemplar (the paper's palette: "select and even mix
+// elements ... save multiple selected exemplars as a new input exemplar"). The exemplars are
+// laid over one another in the box of the largest, each repeated to cover it, so that every
+// neighbourhood of the result holds elements of all of them and a stroke painted with it
+// grows the mixture (laid side by side, growth from one seed would copy only one of them).
+// Where an element would come closer to an element of an earlier exemplar than 0.9 of their
+// summed sample weights (or to another copy of its own exemplar than its own closest pair),
+// it is left out, so the mix has no overlaps; the earlier exemplars win, so list the large
+// elements first. Types keep their names (a name met again with another sample count
+// becomes "name (entry)"); ids are dropped (renumbered by the reader).
 export function mergeExemplars(docs, names) {
   if (docs.length < 2) throw new Error('choose two palette entries or more to merge');
   const dimension = docs[0].dimension;
   if (docs.some((d) => d.dimension !== dimension)) throw new Error('cannot merge 2D and 3D exemplars');
+  const dims = dimension === 3 ? 3 : 2;
+  const models = docs.map((d) => readDocument(d));
+  const extent = (b) => Array.from({ length: dims }, (_, a) => Math.max(b.max[a] - b.min[a], 1e-9));
+  const measure = (b) => extent(b).reduce((m, x) => m * x, 1);
+  const target = models.reduce((best, m) => (measure(m.bounds) > measure(best.bounds) ? m : best)).bounds;
   const types = [];
   const typeByName = new Map();
-  const elements = [];
-  const attributes = [];
-  let offset = 0;
-  let min = null;
-  let max = null;
-  docs.forEach((doc, k) => {
-    const model = readDocument(doc);
-    const b = model.bounds;
-    const shift = offset - b.min[0];
-    const rename = new Map();
-    model.types.forEach((t, ti) => {
-      const count = sampleCount(model, ti);
-      let name = t.name;
-      const known = typeByName.get(name);
-      if (known && known.count !== count) name = `${t.name} (${names[k]})`;
-      rename.set(ti, name);
-      if (!typeByName.has(name)) {
-        const source = (doc.types || []).find((s) => s.name === t.name) || { name: t.name };
-        const copy = { ...source, name };
-        delete copy.mesh; // a mesh path is relative to its own file: not carried over
-        delete copy.depends_on;
-        typeByName.set(name, { count });
-        types.push(copy);
+  const kept = []; // {samples, weights, source}
+  models.forEach((model, k) => {
+    const rename = typeNames(model, docs[k], names[k], types, typeByName);
+    const own = closestPair(model);
+    for (const copy of coveringCopies(model.bounds, target, dims))
+      for (const e of model.elements) {
+        const samples = e.samples.map((p) => p.map((x, a) => x + (copy[a] || 0)));
+        if (!insideBox(centroid(samples), target, dims)) continue;
+        const weights = model.types[e.type].weights;
+        if (collides(samples, weights, kept, k, own)) continue;
+        kept.push({ samples, weights, source: k, element: e, type: rename.get(e.type) });
       }
-    });
-    for (const e of model.elements) {
-      const out = { type: rename.get(e.type) };
-      const pts = e.samples.map((p) => {
-        const q = [p[0] + shift, p[1]];
-        if (dimension === 3) q.push(p[2]);
-        return q;
-      });
-      if (pts.length === 1) out.position = pts[0];
-      else out.samples = pts;
-      if (e.radius > 0) out.radius = e.radius;
-      if (e.orientation) out.orientation = e.orientation;
-      else if (typeof e.angle === 'number') out.angle = e.angle;
-      if (e.scale && e.scale !== 1) out.scale = e.scale;
-      elements.push(out);
-    }
-    const lo = [b.min[0] + shift, b.min[1], b.min[2]];
-    const hi = [b.max[0] + shift, b.max[1], b.max[2]];
-    min = min ? min.map((v, a) => Math.min(v, lo[a])) : lo;
-    max = max ? max.map((v, a) => Math.max(v, hi[a])) : hi;
-    offset = hi[0];
   });
-  const dims = dimension === 3 ? 3 : 2;
   return {
     format: 'tessera',
     version: 1,
-    description: `merged in tessera studio from ${names.join(', ')}`,
+    description: `mixed in tessera studio from ${names.join(', ')}`,
     dimension,
-    domain: { type: 'box', min: min.slice(0, dims), max: max.slice(0, dims) },
+    domain: { type: 'box', min: target.min.slice(0, dims), max: target.max.slice(0, dims) },
     types,
-    ...(attributes.length ? { attributes } : {}),
-    elements,
+    elements: kept.map((k) => elementOut(k, dims)),
   };
+}
+
+// The merged names of a model's types (added to `types` once).
+function typeNames(model, doc, entryName, types, typeByName) {
+  const rename = new Map();
+  model.types.forEach((t, ti) => {
+    const count = sampleCount(model, ti);
+    let name = t.name;
+    const known = typeByName.get(name);
+    if (known && known.count !== count) name = `${t.name} (${entryName})`;
+    rename.set(ti, name);
+    if (!typeByName.has(name)) {
+      const source = (doc.types || []).find((s) => s.name === t.name) || { name: t.name };
+      const copy = { ...source, name, weights: t.weights };
+      delete copy.mesh; // a mesh path is relative to its own file: not carried over
+      delete copy.depends_on;
+      typeByName.set(name, { count });
+      types.push(copy);
+    }
+  });
+  return rename;
+}
+
+// Offsets of the copies of box `b` (repeated with its own period) that cover box `target`.
+function coveringCopies(b, target, dims) {
+  let copies = [[]];
+  for (let a = 0; a < dims; ++a) {
+    const period = Math.max(b.max[a] - b.min[a], 1e-9);
+    const first = Math.floor((target.min[a] - b.min[a]) / period);
+    const last = Math.ceil((target.max[a] - b.max[a]) / period);
+    const next = [];
+    for (const c of copies) for (let i = first; i <= Math.max(first, last); ++i) next.push([...c, i * period]);
+    copies = next;
+  }
+  return copies;
+}
+
+const centroid = (pts) => pts[0].map((_, a) => pts.reduce((s, p) => s + p[a], 0) / pts.length);
+const insideBox = (p, b, dims) => p.slice(0, dims).every((x, a) => x >= b.min[a] && x < b.max[a]);
+
+// The closest distance between samples of two elements of a model.
+function closestPair(model) {
+  let best = Infinity;
+  model.elements.forEach((e, i) =>
+    model.elements.forEach((f, j) => {
+      if (j <= i) return;
+      for (const p of e.samples) for (const q of f.samples) best = Math.min(best, dist(p, q));
+    }),
+  );
+  return Number.isFinite(best) ? best : 0;
+}
+
+const dist = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1], (p[2] || 0) - (q[2] || 0));
+
+function collides(samples, weights, kept, source, own) {
+  for (const k of kept)
+    for (let i = 0; i < samples.length; ++i)
+      for (let j = 0; j < k.samples.length; ++j) {
+        const d = dist(samples[i], k.samples[j]);
+        if (k.source === source ? d < 0.999 * own : d < 0.9 * ((weights[i] || 0) + (k.weights[j] || 0))) return true;
+      }
+  return false;
+}
+
+function elementOut(k, dims) {
+  const e = k.element;
+  const out = { type: k.type };
+  const pts = k.samples.map((p) => p.slice(0, dims));
+  if (pts.length === 1) out.position = pts[0];
+  else out.samples = pts;
+  if (e.radius > 0) out.radius = e.radius;
+  if (e.orientation) out.orientation = e.orientation;
+  else if (typeof e.angle === 'number') out.angle = e.angle;
+  if (e.scale && e.scale !== 1) out.scale = e.scale;
+  return out;
 }
