@@ -21,10 +21,44 @@ struct BrushArgs {
     OptionFlags flags;              // BrushOptions as flags, from the table (tessera/option_table.hpp)
 };
 
+// A surface canvas's mesh as an opaque light-grey class "surface" for the 3D preview, which
+// draws spheres with a z-buffer: spheres at the vertices and triangle centres, sunk below the
+// surface by their radius, hide the elements on the far side (the back of a closed surface
+// seen through the front made the picture unreadable).
+void add_surface(const tessera::BrushCanvas& canvas, tessera::Arrangement& shot) {
+    const tessera::DomainSource src = canvas.domain().source();
+    if (canvas.domain().kind() != tessera::Domain::Kind::shell || src.file.empty()) return;
+    tessera::TriangleMesh mesh = tessera::read_triangle_mesh(src.file);
+    for (tessera::Vec3& v : mesh.vertices) v = src.origin + (v - src.origin) * src.scale;
+    std::vector<tessera::Vec3> normals(mesh.vertices.size());
+    double edges = 0.0;
+    for (const auto& t : mesh.triangles) {
+        const tessera::Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        for (int k = 0; k < 3; ++k) normals[t[k]] += tessera::cross(b - a, c - a);
+        edges += tessera::norm(b - a) + tessera::norm(c - b) + tessera::norm(a - c);
+    }
+    const double radius = 0.6 * edges / (3.0 * std::max<size_t>(1, mesh.triangles.size()));
+    tessera::ElementType surface;
+    surface.name = "surface";
+    surface.color = "#d9d9d9";
+    const int type = static_cast<int>(shot.types.size());
+    shot.types.push_back(surface);
+    auto sunk = [&](const tessera::Vec3& p, const tessera::Vec3& n) {
+        const double len = tessera::norm(n);
+        shot.add_element(type, {len > 0.0 ? p - n * (1.3 * radius / len) : p}, radius);
+    };
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) sunk(mesh.vertices[i], normals[i]);
+    for (const auto& t : mesh.triangles)
+        sunk((mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0,
+             normals[t[0]] + normals[t[1]] + normals[t[2]]);
+}
+
 // The picture: the elements, with the direction strokes drawn as a faint dotted class
-// "stroke" (2D only; a copy, the output is unchanged).
+// "stroke" (2D only), and a surface canvas's surface (add_surface); a copy, the output is
+// unchanged.
 tessera::Arrangement with_strokes(const tessera::BrushCanvas& canvas) {
     tessera::Arrangement shot = canvas.arrangement();
+    add_surface(canvas, shot);
     if (shot.dimension != 2 || canvas.direction_strokes().empty()) return shot;
     tessera::ElementType stroke;
     stroke.name = "stroke";

@@ -1,7 +1,8 @@
 // tessera/brush.hpp — brushing element fields (Hsu, Wei, You and Zhang, "Brushing Element
 // Fields", SIGGRAPH Asia 2018 technical briefs; docs/brush.md).
 //
-// A BrushCanvas is an output domain (a 2D plane region or a 3D volume) that a user paints:
+// A BrushCanvas is an output domain (a 2D plane region, a 3D volume or a 3D surface) that a
+// user paints:
 // elements of one or several exemplars (the palette) are grown along a stroke next to the
 // elements already there, direction strokes set the element field where the user wants it,
 // an erase stroke removes elements, and fill() completes the rest of the canvas from the
@@ -79,11 +80,23 @@ struct BrushReport {
     double seconds = 0.0;
 };
 
+namespace brush {
+class Surface;  // the surface of a surface canvas (src/brush/surface.hpp)
+}
+
 class BrushCanvas {
 public:
-    // A canvas over `domain` (2D: box, polygon, mask; 3D: box, mesh volume, shell).
-    // Error(option) naming the field for invalid options.
+    // A canvas over `domain`: 2D planes (box, polygon, mask), 3D volumes (box, mesh) and 3D
+    // surfaces (shell). A shell canvas is a surface canvas (the paper's Figure 1b): elements sit
+    // on the mesh's surface, strokes are moved onto it and the element field is tangent to it;
+    // the mesh is read again from the shell's file (Error(domain) for a shell made from a mesh
+    // in memory: use the constructor below). Error(option) naming the field for invalid options.
     BrushCanvas(const Domain& domain, const BrushOptions& options = {});
+    // A surface canvas on a mesh in memory (counter-clockwise = outward), its domain the shell
+    // Domain::shell(surface, thickness): growth runs within `thickness` of the surface (about
+    // one palette spacing), and every sample is then moved onto the surface.
+    BrushCanvas(const TriangleMesh& surface, double thickness, const BrushOptions& options = {},
+                const std::string& name = "mesh");
     ~BrushCanvas();
     BrushCanvas(BrushCanvas&&) noexcept;
     BrushCanvas& operator=(BrushCanvas&&) noexcept;
@@ -138,6 +151,7 @@ public:
     struct Impl;
 
 private:
+    BrushCanvas(const Domain& domain, const BrushOptions& options, std::shared_ptr<const brush::Surface> surface);
     std::unique_ptr<Impl> impl_;
 };
 
@@ -152,7 +166,11 @@ std::vector<std::array<int, 2>> brush_element_graph(const Exemplar& exemplar, in
 // A session file (docs/brush.md, "Session files"): the canvas, the palette, the options and
 // the operations (paint, direction, erase, fill, optimize) replayed in order.
 struct BrushSession {
-    std::string canvas;                   // a domain as --domain writes it ("box:60,40", "mesh:f.obj")
+    // A domain as --domain writes it ("box:60,40", "mesh:f.obj", "shell:f.obj,0.5"), or a
+    // surface, "surface:FILE[,thickness[,resolution]]" (FILE relative to base_dir; thickness by
+    // default the largest palette spacing): the shell canvas of that thickness.
+    std::string canvas;
+    std::string base_dir = ".";           // the session file's folder
     int dimension = 2;
     std::vector<std::string> palette_names;
     std::vector<Exemplar> palette;

@@ -14,6 +14,8 @@
 
 namespace tessera::brush {
 
+class Surface;  // brush/surface.hpp
+
 // One input sample's neighbourhood (Eq. 1): its neighbours' offsets p^(s'_i, s_i) in the
 // exemplar's frame, their weights w_s and output types.
 struct InputNeighbourhood {
@@ -73,9 +75,18 @@ struct BrushCanvas::Impl {
     std::vector<Quat> relative;   // per element: its rotation in the frame of its first sample's o(s)
     std::vector<Stroke> strokes;  // direction strokes (paint strokes too)
     std::uint64_t next_id = 0;
+    // A surface canvas (the paper's Figure 1b; brush/canvas_surface.hpp): the mesh its elements
+    // sit on; null on planes and volumes.
+    std::shared_ptr<const brush::Surface> surface;
 
     int kappa_of_element(int e) const { return out_types[arrangement.elements[e].type].kappa; }
     double weight_of_sample(int s) const;
+    // Where elements may be (grown, matched, kept): the canvas, or a surface's band.
+    const Domain& space() const;
+    // The local frame of sample s (Eq. 1, 4): its o(s) as x; on a surface, z is the normal there.
+    Quat frame_of_sample(int s) const;
+    // The frame of element e with its centre at c (rigid shapes, element poses).
+    Quat frame_of_element(int e, const Vec3& c) const;
     // The palette spacing of a sample's exemplar.
     double spacing_of_sample(int s) const { return palette[kappa_of_element(arrangement.samples[s].element)].spacing; }
 };

@@ -8,12 +8,14 @@
 
 #include "brush/brush_state.hpp"
 #include "brush/canvas_grow.hpp"
+#include "brush/canvas_surface.hpp"
 #include "brush/distribution.hpp"
 #include "brush/laplacian_field.hpp"
 #include "brush/orientations.hpp"
 #include "brush/palette.hpp"
 #include "brush/positions.hpp"
 #include "brush/strokes.hpp"
+#include "brush/surface.hpp"
 #include "core/progress_span.hpp"
 #include "tessera/error.hpp"
 #include "tessera/option_table.hpp"
@@ -80,6 +82,17 @@ double stroke_half_width(const BrushCanvas::Impl& st, const Stroke& stroke, int 
     return 0.5 * (stroke.width > 0.0 ? stroke.width : st.options.stroke_width * spacing);
 }
 
+double smallest_spacing(const BrushCanvas::Impl& st) {
+    double s = std::numeric_limits<double>::infinity();
+    for (const PaletteEntry& p : st.palette) s = std::min(s, p.spacing);
+    return std::isfinite(s) ? s : 1.0;
+}
+
+// On a surface a stroke is moved onto it in steps of half the smallest spacing (elsewhere: as is).
+Stroke canvas_stroke(const BrushCanvas::Impl& st, const Stroke& stroke, int min_points, const std::string& where) {
+    return snap_stroke(st, stroke, 0.5 * smallest_spacing(st), min_points, where);
+}
+
 std::vector<char> movable_samples(const BrushCanvas::Impl& st) {
     std::vector<char> movable(st.arrangement.samples.size(), 0);
     for (const Element& e : st.arrangement.elements)
@@ -121,7 +134,17 @@ void remove_elements(BrushCanvas::Impl& st, const std::vector<char>& remove) {
 
 }  // namespace
 
-BrushCanvas::BrushCanvas(const Domain& domain, const BrushOptions& options) : impl_(std::make_unique<Impl>()) {
+BrushCanvas::BrushCanvas(const Domain& domain, const BrushOptions& options)
+    : BrushCanvas(domain, options, domain.kind() == Domain::Kind::shell ? surface_of_shell(domain) : nullptr) {}
+
+BrushCanvas::BrushCanvas(const TriangleMesh& surface, double thickness, const BrushOptions& options,
+                         const std::string& name)
+    : BrushCanvas(Domain::shell(surface, thickness, 128, name), options,
+                  std::make_shared<const Surface>(surface, thickness, name)) {}
+
+BrushCanvas::BrushCanvas(const Domain& domain, const BrushOptions& options, std::shared_ptr<const brush::Surface> surface)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->surface = std::move(surface);
     check_options(brush_option_table(), options);
     if (!(domain.measure() > 0.0)) throw Error(ErrorKind::domain, "canvas: the domain is empty");
     impl_->domain = domain;
@@ -174,18 +197,21 @@ BrushReport BrushCanvas::paint(int exemplar, const Stroke& stroke) {
     if (exemplar < 0 || exemplar >= static_cast<int>(st.palette.size()))
         throw Error(ErrorKind::input, "paint: no palette entry " + std::to_string(exemplar));
     check_stroke(stroke, st.dimension, 1, "paint");
+    const Stroke on = canvas_stroke(st, stroke, 1, "paint");
     Transaction t(st);
     report_progress(st, "paint", -1, 1, 0.0, 0.0, start);
-    const Domain band = stroke_band(st.domain, stroke, stroke_half_width(st, stroke, exemplar));
+    const Domain band = stroke_band(st.space(), on, stroke_half_width(st, on, exemplar));
+    const double spacing = st.palette[exemplar].spacing;
     const OrientationField field =
-        stroke.points.size() >= 2 ? OrientationField::polyline(stroke.points) : interpolate_strokes(st.domain, st.strokes, st.palette[exemplar].spacing, st.options.sigma * st.palette[exemplar].spacing);
+        on.points.size() >= 2 ? canvas_field(st, OrientationField::polyline(on.points))
+                              : interpolate_strokes(st.space(), st.strokes, spacing, st.options.sigma * spacing, st.surface.get());
     const int first = static_cast<int>(st.arrangement.elements.size());
     const auto [added, dropped] = [&] {
         const ProgressPart part(st, 0.0, 0.95, "paint");
-        return grow_entry(st, exemplar, band, field, stroke.points.front());
+        return grow_entry(st, exemplar, band, field, on.points.front());
     }();
     for (int i = first; i < static_cast<int>(st.arrangement.elements.size()); ++i) st.arrangement.elements[i].locked = true;
-    if (stroke.points.size() >= 2) st.strokes.push_back(stroke);
+    if (on.points.size() >= 2) st.strokes.push_back(on);
     BrushReport r;
     r.added = added;
     r.removed = dropped;
@@ -197,18 +223,19 @@ BrushReport BrushCanvas::paint(int exemplar, const Stroke& stroke) {
 
 BrushReport BrushCanvas::direct(const Stroke& stroke) {
     check_stroke(stroke, impl_->dimension, 2, "direction");
-    impl_->strokes.push_back(stroke);
+    impl_->strokes.push_back(canvas_stroke(*impl_, stroke, 2, "direction"));
     return {};
 }
 
 BrushReport BrushCanvas::erase(const Stroke& stroke) {
     Impl& st = *impl_;
     check_stroke(stroke, st.dimension, 1, "erase");
-    const double half = stroke_half_width(st, stroke, st.palette.empty() ? -1 : 0);
+    const Stroke on = canvas_stroke(st, stroke, 1, "erase");
+    const double half = stroke_half_width(st, on, st.palette.empty() ? -1 : 0);
     std::vector<char> remove(st.arrangement.elements.size(), 0);
     BrushReport r;
     for (size_t i = 0; i < remove.size(); ++i)
-        if (distance_to_stroke(stroke, st.arrangement.elements[i].position) <= half) remove[i] = 1, ++r.removed;
+        if (distance_to_stroke(on, st.arrangement.elements[i].position) <= half) remove[i] = 1, ++r.removed;
     remove_elements(st, remove);
     return r;
 }
@@ -249,7 +276,7 @@ BrushCanvas::Energies measure_energies(const BrushCanvas::Impl& st, const std::v
         const OutType& ot = st.out_types[el.type];
         for (const auto& edge : st.palette[ot.kappa].graph[ot.type]) {
             const int a = el.first_sample + edge[0], b = el.first_sample + edge[1];
-            const Vec3 want = frame_from_direction(st.direction[a], st.dimension).rotate(st.reference[b] - st.reference[a]) * el.scale;
+            const Vec3 want = st.frame_of_sample(a).rotate(st.reference[b] - st.reference[a]) * el.scale;
             e.graph += squared_norm(arr.samples[b].p - arr.samples[a].p - want);  // Eq. 4
         }
     }
@@ -258,12 +285,6 @@ BrushCanvas::Energies measure_energies(const BrushCanvas::Impl& st, const std::v
     const double per = 1.0 / static_cast<double>(n);
     e.distribution *= per, e.conflict *= per, e.graph *= per, e.alignment *= per, e.continuity *= per, e.rigidity *= per;
     return e;
-}
-
-double smallest_spacing(const BrushCanvas::Impl& st) {
-    double s = std::numeric_limits<double>::infinity();
-    for (const PaletteEntry& p : st.palette) s = std::min(s, p.spacing);
-    return std::isfinite(s) ? s : 1.0;
 }
 
 }  // namespace
@@ -286,11 +307,12 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
             entries[k] = 1, any_present = true;
     }
     const double spacing = smallest_spacing(st);
-    const OrientationField field = interpolate_strokes(st.domain, st.strokes, spacing, st.options.sigma * spacing);
+    const OrientationField field =
+        interpolate_strokes(st.space(), st.strokes, spacing, st.options.sigma * spacing, st.surface.get());
     BrushReport r;
     if (!any_present) {  // nothing of the chosen entries yet: the first grows over the canvas
         const ProgressPart part(st, 0.0, kFillGrowthShare, "fill");
-        const auto [added, dropped] = grow_entry(st, exemplars.front(), st.domain, field, st.domain.bounds().center(), kFillTilt);
+        const auto [added, dropped] = grow_entry(st, exemplars.front(), st.space(), field, st.space().bounds().center(), kFillTilt);
         r.added += added, r.removed += dropped;
     } else {
         const int parts = static_cast<int>(std::count(entries.begin(), entries.end(), 1));
@@ -302,7 +324,7 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
             std::optional<Domain> region;
             try {  // the cells nearer to an element of entry k than to any other entry's
                 region = Domain::region(
-                    st.domain, [&](const Vec3& p) { return nearest_entry(st, entries, p) == k; }, 0.5 * spacing,
+                    st.space(), [&](const Vec3& p) { return nearest_entry(st, entries, p) == k; }, 0.5 * spacing,
                     "the part of the canvas nearest to '" + st.names[k] + "'");
             } catch (const Error&) {
                 continue;  // no cell of the canvas is nearest to it

@@ -1,7 +1,9 @@
 // Growth of palette entries on a brush canvas (brush/canvas_grow.hpp).
 #include "brush/canvas_grow.hpp"
 
+#include "brush/canvas_surface.hpp"
 #include "brush/positions.hpp"
+#include "brush/surface.hpp"
 #include "core/rng.hpp"
 #include "core/spatial_grid.hpp"
 
@@ -103,9 +105,11 @@ std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& r
         if (e.locked) continue;
         std::vector<Vec3> sample_points;
         for (int k = 0; k < e.sample_count; ++k) sample_points.push_back(grown.samples[e.first_sample + k].p);
+        if (st.surface)  // grown in the band: the element sits on the surface, not in its thickness
+            for (Vec3& q : sample_points) q = st.surface->closest(q).p;
         const std::vector<double>& w = entry.weights[e.type];
         bool inside = true;  // an open region's edge lets samples reach beyond it, never the canvas's
-        for (const Vec3& q : sample_points) inside = inside && st.domain.inside(q);
+        for (const Vec3& q : sample_points) inside = inside && st.space().inside(q);
         if (!inside || conflicts(st, grid, reach, sample_points, w)) {
             ++dropped;
             continue;
@@ -114,7 +118,7 @@ std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& r
         for (const Vec3& q : sample_points) centre += q;
         centre = centre / static_cast<double>(sample_points.size());
         const Vec3 u = tilted_direction(st, field, centre, tilt);
-        const Quat frame = frame_from_direction(u, st.dimension);
+        const Quat frame = frame_at(st, u, centre);  // on a surface: z = the normal, u made tangent
         const int i = st.arrangement.add_element(entry.out_type[e.type], sample_points, e.radius);
         Element& out = st.arrangement.elements[i];
         out.id = st.next_id++;
@@ -126,6 +130,7 @@ std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& r
         st.relative.push_back(frame.conjugate() * e.orientation);
         ++added;
     }
+    snap_elements(st, first_new, static_cast<int>(st.arrangement.elements.size()));  // o(s) tangent per sample
     update_element_poses(st, first_new);
     return {added, dropped};
 }

@@ -77,7 +77,7 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
     const PaletteEntry& entry = st.palette[ot.kappa];
     m.pairs.clear();
     m.cost = 0.0;
-    const Quat frame = frame_from_direction(st.direction[s], st.dimension);
+    const Quat frame = st.frame_of_sample(s);
     const Quat inverse = frame.conjugate();
     nb.gather(st, s, entry.radius, scratch.found);
     scratch.local.clear();
@@ -87,7 +87,7 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
                                  oe.scale * st.weight_of_sample(o) / e.scale, oe.type, o});
     }
     const double own_weight = st.weight_of_sample(s);
-    const Placement place{st.domain, arr.samples[s].p, frame, e.scale};
+    const Placement place{st.space(), arr.samples[s].p, frame, e.scale};
     const double r2 = entry.radius * entry.radius;
     const double pair_limit2 = kPairThreshold * kPairThreshold * entry.spacing * entry.spacing;
     double best = std::numeric_limits<double>::infinity();

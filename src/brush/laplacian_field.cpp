@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "brush/strokes.hpp"
+#include "brush/surface.hpp"
 #include "tessera/error.hpp"
 
 namespace tessera::brush {
@@ -35,21 +36,40 @@ FieldGrid grid_over(const Domain& canvas, double cell) {
     return g;
 }
 
+// Which nodes take part: all of them, or on a surface those within reach of it (every corner
+// of a cell that a surface point lies in is within a cell diagonal of that point).
+std::vector<char> active_nodes(const FieldGrid& g, const Surface* surface) {
+    const int nx = g.size[0], ny = g.size[1], nz = g.size[2];
+    std::vector<char> active(static_cast<size_t>(nx) * ny * nz, 1);
+    if (!surface) return active;
+    const double reach = norm(g.spacing) * 1.01;
+    for (int k = 0, v = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i, ++v)
+                active[v] = surface->closest(g.origin + Vec3(i * g.spacing.x, j * g.spacing.y, k * g.spacing.z)).distance <= reach;
+    return active;
+}
+
 }  // namespace
 
 OrientationField interpolate_strokes(const Domain& canvas, const std::vector<Stroke>& strokes, double cell,
-                                     double sigma) {
-    if (strokes.empty()) return {};
+                                     double sigma, const Surface* surface) {
+    if (strokes.empty()) return surface ? surface_field(*surface, {}) : OrientationField{};
     FieldGrid g = grid_over(canvas, cell);
     const int nx = g.size[0], ny = g.size[1], nz = g.size[2];
     const int n = nx * ny * nz;
     auto index = [&](int i, int j, int k) { return i + nx * (j + ny * k); };
+    const std::vector<char> active = active_nodes(g, surface);
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 3);
     for (int k = 0; k < nz; ++k)
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i) {
                 const int v = index(i, j, k);
+                if (!active[v]) {  // left out: its own unknown, zero (+x below)
+                    triplets.emplace_back(v, v, 1.0);
+                    continue;
+                }
                 const Vec3 p = g.origin + Vec3(i * g.spacing.x, j * g.spacing.y, k * g.spacing.z);
                 const StrokePoint s = closest_stroke_point(strokes, p);
                 // Eq. 5's falloff; a tiny floor keeps the system definite far from strokes.
@@ -60,6 +80,7 @@ OrientationField interpolate_strokes(const Domain& canvas, const std::vector<Str
                 for (const auto& m : next) {
                     if (m[0] >= nx || m[1] >= ny || m[2] >= nz) continue;
                     const int w = index(m[0], m[1], m[2]);
+                    if (!active[w]) continue;
                     triplets.emplace_back(v, v, 1.0);
                     triplets.emplace_back(w, w, 1.0);
                     triplets.emplace_back(v, w, -1.0);
@@ -78,7 +99,8 @@ OrientationField interpolate_strokes(const Domain& canvas, const std::vector<Str
         // A node where opposite strokes cancel exactly keeps +x (a grid needs non-zero vectors).
         g.vectors[static_cast<size_t>(v)] = len > 1e-12 ? d / len : Vec3{1, 0, 0};
     }
-    return OrientationField::grid(g, "stroke field");
+    const OrientationField field = OrientationField::grid(g, "stroke field");
+    return surface ? surface_field(*surface, field) : field;
 }
 
 }  // namespace tessera::brush

@@ -4,10 +4,12 @@
 #include <LBFGS.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <exception>
 
+#include "brush/canvas_surface.hpp"
 #include "brush/strokes.hpp"
 
 namespace tessera::brush {
@@ -32,6 +34,11 @@ struct FieldProblem {
     std::vector<Vec3> align_to;       // O(p)
     std::vector<Pair> pairs;          // continuity (Eq. 6) and rigidity (Eq. 7)
     int groups = 0;
+    // Variables per group: the dimension; on a surface 2, the coordinates in a tangent basis
+    // of the group (at its sample, or at a rigid element's centre), so that every o(s) the
+    // solve tries stays in the tangent plane (the gradient is the 3D one projected onto it).
+    int vars = 2;
+    std::vector<std::array<Vec3, 2>> basis;  // per group, on a surface only
 };
 
 double sigma_of(const BrushCanvas::Impl& st, int s) { return st.options.sigma * st.spacing_of_sample(s); }
@@ -74,6 +81,32 @@ void add_rigidity_pairs(const BrushCanvas::Impl& st, FieldProblem& fp, double we
     }
 }
 
+// On a surface, each variable group's tangent basis: (t1, t2) with t1 the group's current
+// o(s) (tangent at its sample, or at a rigid element's centre) and t2 = n x t1.
+void add_tangent_bases(const BrushCanvas::Impl& st, FieldProblem& fp) {
+    fp.vars = 2;
+    fp.basis.assign(static_cast<size_t>(fp.groups), {});
+    const Arrangement& arr = st.arrangement;
+    auto set = [&](int g, const Vec3& d, const Vec3& at) {
+        const Quat frame = frame_at(st, d, at);
+        fp.basis[g] = {frame.rotate(Vec3{1, 0, 0}), frame.rotate(Vec3{0, 1, 0})};
+    };
+    for (const Element& e : arr.elements) {
+        if (fp.group[e.first_sample] < 0) continue;
+        const OutType& ot = st.out_types[e.type];
+        if (st.palette[ot.kappa].exemplar.types[ot.type].rigid) {
+            Vec3 c;
+            for (int k = 0; k < e.sample_count; ++k) c += arr.samples[e.first_sample + k].p;
+            set(fp.group[e.first_sample], st.direction[e.first_sample], c / static_cast<double>(e.sample_count));
+            continue;
+        }
+        for (int k = 0; k < e.sample_count; ++k) {
+            const int s = e.first_sample + k;
+            set(fp.group[s], st.direction[s], arr.samples[s].p);
+        }
+    }
+}
+
 FieldProblem build_problem(const BrushCanvas::Impl& st, const std::vector<char>& movable, bool with_weights) {
     const Arrangement& arr = st.arrangement;
     const int n = static_cast<int>(arr.samples.size());
@@ -88,6 +121,8 @@ FieldProblem build_problem(const BrushCanvas::Impl& st, const std::vector<char>&
         fp.groups += rigid ? 1 : e.sample_count;
     }
     const BrushOptions& o = st.options;
+    fp.vars = fp.dim;
+    if (st.surface && with_weights) add_tangent_bases(st, fp);
     fp.fixed = st.direction;
     fp.align_w.assign(n, 0.0);
     fp.align_to.assign(n, Vec3{});
@@ -96,7 +131,8 @@ FieldProblem build_problem(const BrushCanvas::Impl& st, const std::vector<char>&
         const double sigma = sigma_of(st, s);
         if (std::isfinite(sp.distance))
             fp.align_w[s] = (with_weights ? o.w_alignment : 1.0) * std::exp(-sp.distance * sp.distance / (sigma * sigma));  // Eq. 5
-        fp.align_to[s] = sp.tangent;
+        // O(p) of Eq. 5; on a surface its tangent part at the sample, which o(s) can reach.
+        fp.align_to[s] = tangent_at(st, sp.tangent, arr.samples[s].p);
     }
     add_continuity_pairs(st, fp, with_weights ? o.w_continuity : 1.0);
     add_rigidity_pairs(st, fp, with_weights ? o.w_rigidity : 1.0);
@@ -130,15 +166,19 @@ public:
         }
         grad.setZero(v.size());
         for (int g = 0; g < fp_.groups; ++g) {
-            Vec3 raw;
-            for (int c = 0; c < d; ++c) raw[c] = v[g * d + c];
+            const Vec3 raw = vector_of(v, g);
             const double len = std::max(norm(raw), 1e-12);
             const Vec3 u = units_[g];
             // d u / d v = (I - u u^T) / |v|
             const Vec3 gu = (du_[g] - u * dot(u, du_[g])) / len;
             const double stretch = squared_norm(raw) - 1.0;
             f += kNormPull * stretch * stretch;
-            for (int c = 0; c < d; ++c) grad[g * d + c] = gu[c] + kNormPull * 4.0 * stretch * raw[c];
+            if (fp_.basis.empty()) {
+                for (int c = 0; c < d; ++c) grad[g * d + c] = gu[c] + kNormPull * 4.0 * stretch * raw[c];
+            } else {  // the chain rule through raw = v0 t1 + v1 t2: the gradient projected on the plane
+                const Vec3 total = gu + raw * (kNormPull * 4.0 * stretch);
+                for (int c = 0; c < 2; ++c) grad[g * 2 + c] = dot(total, fp_.basis[g][c]);
+            }
         }
         if (!(f >= best_f)) best_f = f, best_v = v;  // a failed line search leaves v at a trial point
         return f;
@@ -148,10 +188,17 @@ public:
     Eigen::VectorXd best_v;
 
     Vec3 unit(const Eigen::VectorXd& v, int g) const {
+        const Vec3 raw = vector_of(v, g);
+        const double len = norm(raw);
+        return len > 1e-12 ? raw / len : fp_.basis.empty() ? Vec3{1, 0, 0} : fp_.basis[g][0];
+    }
+
+    // The unnormalised o(s) of group g: its variables, or on a surface their tangent combination.
+    Vec3 vector_of(const Eigen::VectorXd& v, int g) const {
+        if (!fp_.basis.empty()) return fp_.basis[g][0] * v[g * 2] + fp_.basis[g][1] * v[g * 2 + 1];
         Vec3 raw;
         for (int c = 0; c < fp_.dim; ++c) raw[c] = v[g * fp_.dim + c];
-        const double len = norm(raw);
-        return len > 1e-12 ? raw / len : Vec3{1, 0, 0};
+        return raw;
     }
 
 private:
@@ -172,11 +219,12 @@ OrientationResult solve_orientations(BrushCanvas::Impl& st, const std::vector<ch
     OrientationResult result;
     const FieldProblem fp = build_problem(st, movable, true);
     if (fp.groups == 0) return result;
-    const int d = fp.dim;
+    const int d = fp.vars;
     Eigen::VectorXd v(fp.groups * d);
     for (size_t s = 0; s < fp.group.size(); ++s)
         if (fp.group[s] >= 0)
-            for (int c = 0; c < d; ++c) v[fp.group[s] * d + c] = st.direction[s][c];
+            for (int c = 0; c < d; ++c)
+                v[fp.group[s] * d + c] = fp.basis.empty() ? st.direction[s][c] : dot(st.direction[s], fp.basis[fp.group[s]][c]);
     LBFGSpp::LBFGSParam<double> param;
     param.max_iterations = st.options.lbfgs_iterations;
     param.epsilon = 1e-6;

@@ -4,6 +4,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/IterativeLinearSolvers>
 
+#include "brush/canvas_surface.hpp"
 #include "tessera/error.hpp"
 #include "tessera/field.hpp"
 
@@ -54,7 +55,7 @@ void add_distribution_rows(const BrushCanvas::Impl& st, const std::vector<Sample
     const double w = st.options.w_distribution;
     for (int s = 0; s < static_cast<int>(matches.size()); ++s) {
         if (eq.unknown[s] < 0 || matches[s].pairs.empty()) continue;
-        const Quat frame = frame_from_direction(st.direction[s], st.dimension);
+        const Quat frame = st.frame_of_sample(s);
         for (const NeighbourPair& p : matches[s].pairs) eq.difference(s, p.other, frame.rotate(p.target), w);  // Eq. 1
     }
 }
@@ -78,29 +79,59 @@ void add_graph_rows(const BrushCanvas::Impl& st, NormalEquations& eq) {
         const OutType& ot = st.out_types[e.type];
         for (const auto& edge : st.palette[ot.kappa].graph[ot.type]) {
             const int a = e.first_sample + edge[0], b = e.first_sample + edge[1];
-            const Quat frame = frame_from_direction(st.direction[a], st.dimension);
+            const Quat frame = st.frame_of_sample(a);
             eq.difference(a, b, frame.rotate(st.reference[b] - st.reference[a]) * e.scale, w);  // Eq. 4
         }
     }
 }
 
+// An element poking out of the canvas (a rigid shape re-placed in a turned frame, or samples
+// pushed out by the incomplete neighbourhoods at the edge) is moved in whole: by the step that
+// brings its furthest-out sample to the edge, at most kContainSteps times. Returns whether all
+// its samples are inside then.
+constexpr int kContainSteps = 4;
+
+bool move_inside(BrushCanvas::Impl& st, const Element& e) {
+    const Domain& canvas = st.space();
+    Arrangement& arr = st.arrangement;
+    for (int step = 0; step <= kContainSteps; ++step) {
+        bool outside = false;
+        Vec3 push;
+        double longest = -1.0;
+        for (int k = 0; k < e.sample_count; ++k) {
+            const Vec3& p = arr.samples[e.first_sample + k].p;
+            if (canvas.inside(p)) continue;
+            outside = true;
+            const Vec3 d = canvas.closest_inside(p) - p;
+            if (squared_norm(d) > longest) longest = squared_norm(d), push = d;
+        }
+        if (!outside) return true;
+        if (step == kContainSteps) return false;
+        for (int k = 0; k < e.sample_count; ++k) arr.samples[e.first_sample + k].p += push;
+    }
+    return false;
+}
+
 // Rigid elements take their exact shape again (at the solved centroid, in the frame of o(s)),
-// and an element whose centre left the canvas goes back to where it was (projected onto the
-// edge instead, the elements that the incomplete neighbourhoods there push out piled up on it).
+// an element with samples out of the canvas is moved in whole (move_inside), and one whose
+// centre left the canvas, or that cannot be moved in, goes back to where it was (projected onto
+// the edge instead, the elements that the incomplete neighbourhoods there push out piled up on it).
+// On a surface the canvas is its band; the samples go onto the surface afterwards.
 void restore_shapes(BrushCanvas::Impl& st, const std::vector<char>& movable, const std::vector<Sample>& before) {
     Arrangement& arr = st.arrangement;
-    for (Element& e : arr.elements) {
+    for (int i = 0; i < static_cast<int>(arr.elements.size()); ++i) {
+        const Element& e = arr.elements[i];
         if (!movable[e.first_sample]) continue;
         Vec3 c;
         for (int k = 0; k < e.sample_count; ++k) c += arr.samples[e.first_sample + k].p;
         c = c / static_cast<double>(e.sample_count);
         const OutType& ot = st.out_types[e.type];
         if (st.palette[ot.kappa].exemplar.types[ot.type].rigid) {
-            const Quat frame = frame_from_direction(st.direction[e.first_sample], st.dimension);
+            const Quat frame = st.frame_of_element(i, c);
             for (int k = 0; k < e.sample_count; ++k)
                 arr.samples[e.first_sample + k].p = c + frame.rotate(st.reference[e.first_sample + k]) * e.scale;
         }
-        if (!st.domain.inside(c))
+        if (!st.space().inside(c) || !move_inside(st, e))
             for (int k = 0; k < e.sample_count; ++k) arr.samples[e.first_sample + k].p = before[e.first_sample + k].p;
     }
 }
@@ -147,6 +178,7 @@ bool assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, c
         if (unknown[s] >= 0)
             arr.samples[s].p = Vec3{x(unknown[s], 0), x(unknown[s], 1), st.dimension == 3 ? x(unknown[s], 2) : 0.0};
     restore_shapes(st, movable, before);
+    snap_elements(st, 0, static_cast<int>(arr.elements.size()));  // on a surface: back onto it, o(s) tangent
     update_element_poses(st);
     return bound_hit;
 }
@@ -159,7 +191,7 @@ void update_element_poses(BrushCanvas::Impl& st, int first_element) {
         Vec3 c;
         for (int k = 0; k < e.sample_count; ++k) c += arr.samples[e.first_sample + k].p;
         e.position = c / static_cast<double>(e.sample_count);
-        e.orientation = frame_from_direction(st.direction[e.first_sample], st.dimension) * st.relative[i];
+        e.orientation = st.frame_of_element(i, e.position) * st.relative[i];
     }
 }
 

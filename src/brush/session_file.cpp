@@ -2,10 +2,14 @@
 // replaying them. A session file is what the studio saves and `tessera brush` replays.
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "tessera/brush.hpp"
+#include "tessera/det.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
 #include "tessera/option_table.hpp"
@@ -128,6 +132,57 @@ BrushSession::Op read_op(const Json& op, const Reader& r, const BrushSession& se
     return out;
 }
 
+// "surface:FILE[,thickness[,resolution]]": FILE, then the trailing comma-separated numbers
+// (a file name may hold commas), as the --domain forms mesh: and shell: are split.
+struct SurfaceForm {
+    std::string file;
+    std::vector<double> numbers;
+};
+
+std::optional<SurfaceForm> surface_form(const std::string& canvas, const std::string& source) {
+    const std::string prefix = "surface:";
+    if (canvas.rfind(prefix, 0) != 0) return std::nullopt;
+    SurfaceForm form{canvas.substr(prefix.size()), {}};
+    for (size_t comma = form.file.rfind(','); comma != std::string::npos && form.numbers.size() < 2;
+         comma = form.file.rfind(',')) {
+        const std::string field = form.file.substr(comma + 1);
+        char* end = nullptr;
+        const double x = std::strtod(field.c_str(), &end);
+        if (field.empty() || end != field.c_str() + field.size()) break;
+        form.numbers.insert(form.numbers.begin(), x);
+        form.file.resize(comma);
+    }
+    if (form.file.empty() || (!form.numbers.empty() && !(form.numbers[0] > 0.0)) ||
+        (form.numbers.size() == 2 && form.numbers[1] != std::floor(form.numbers[1])))
+        throw Error(ErrorKind::input, source + ": canvas: expected surface:FILE[,thickness[,resolution]] with "
+                                               "thickness > 0, got '" + canvas + "'");
+    return form;
+}
+
+// The band of a surface canvas when the session gives none: the largest palette spacing, so
+// that every entry's layer and its neighbourhoods' curvature fit in it.
+double default_thickness(const BrushSession& session) {
+    double t = 0.0;
+    for (const Exemplar& e : session.palette)
+        if (e.elements.size() > 1) {
+            Exemplar positioned = e;
+            positioned.update_positions();
+            t = std::max(t, mean_nearest_neighbor_distance(positioned));
+        }
+    return t > 0.0 ? t : 1.0;
+}
+
+Domain canvas_domain(const BrushSession& session) {
+    const auto form = surface_form(session.canvas, "canvas");
+    if (!form) return parse_output_domain(session.canvas, session.palette.front(), 1.0, "canvas");
+    if (session.dimension != 3) throw Error(ErrorKind::input, "canvas: a surface canvas needs 3D palette entries");
+    const std::filesystem::path p = form->file;
+    const std::string file = (p.is_absolute() ? p : std::filesystem::path(session.base_dir) / p).string();
+    const double thickness = form->numbers.empty() ? default_thickness(session) : form->numbers[0];
+    const int resolution = form->numbers.size() == 2 ? static_cast<int>(form->numbers[1]) : 128;
+    return Domain::shell(file, thickness, resolution);
+}
+
 }  // namespace
 
 BrushSession parse_brush_session(const std::string& text, const std::string& source, const std::string& base_dir) {
@@ -149,6 +204,8 @@ BrushSession parse_brush_session(const std::string& text, const std::string& sou
     const Json& canvas = r.require(doc, "canvas", "session");
     if (!canvas.is_string()) r.fail("canvas", "must be a domain as --domain writes it (\"box:0,0,60,40\")");
     session.canvas = canvas.get<std::string>();
+    session.base_dir = base_dir;
+    surface_form(session.canvas, source);  // its syntax checked here, its file read at replay
     read_options(doc, r, session.options);
     const Json& ops = r.require(doc, "ops", "session");
     if (!ops.is_array()) r.fail("ops", "must be an array of operations");
@@ -162,7 +219,7 @@ BrushSession read_brush_session(const std::string& path) {
 }
 
 BrushCanvas replay_brush_session(const BrushSession& session, const Progress& progress) {
-    const Domain domain = parse_output_domain(session.canvas, session.palette.front(), 1.0, "canvas");
+    const Domain domain = canvas_domain(session);
     BrushCanvas canvas(domain, session.options);
     for (size_t i = 0; i < session.palette.size(); ++i) canvas.add_exemplar(session.palette_names[i], session.palette[i]);
     canvas.set_progress(progress);

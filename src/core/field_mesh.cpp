@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/field_data.hpp"
+#include "core/triangle_closest.hpp"
 #include "tessera/error.hpp"
 #include "tessera/field.hpp"
 
@@ -184,37 +185,6 @@ private:
     }
 };
 
-// Barycentric coordinates of the point of triangle abc closest to p (Ericson,
-// Real-Time Collision Detection 5.1.5). The triangle must not be degenerate.
-std::array<double, 3> closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return {1, 0, 0};
-    const Vec3 bp = p - b;
-    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3) return {0, 1, 0};
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-        const double t = d1 / (d1 - d3);
-        return {1 - t, t, 0};
-    }
-    const Vec3 cp = p - c;
-    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6) return {0, 0, 1};
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-        const double t = d2 / (d2 - d6);
-        return {1 - t, 0, t};
-    }
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-        const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return {0, 1 - t, t};
-    }
-    const double denom = 1.0 / (va + vb + vc);
-    const double v = vb * denom, w = vc * denom;
-    return {1 - v - w, v, w};
-}
 
 Vec3 unit_or_zero(const Vec3& v) {
     const double n = norm(v);
@@ -309,7 +279,7 @@ struct MeshData {
             [&](int t) {
                 const auto& tri = triangles[static_cast<std::size_t>(t)];
                 const Vec3 &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
-                const auto w = closest_on_triangle(p, a, b, c);
+                const auto w = core::closest_barycentric(p, a, b, c);
                 const double d2 = squared_norm(a * w[0] + b * w[1] + c * w[2] - p);
                 if (d2 < best || (d2 == best && t < triangle)) best = d2, triangle = t, bary = w;
             },

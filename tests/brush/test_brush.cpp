@@ -198,3 +198,22 @@ TEST(Brush, FillProgressOnlyRisesAndIsDoneOnceAtTheEnd) {
     EXPECT_DOUBLE_EQ(events.back().fraction, 1.0);
     for (size_t i = 0; i + 1 < events.size(); ++i) EXPECT_NE(events[i].stage, "done") << "event " << i;
 }
+
+// No element pokes out of its canvas: sticks turned by a diagonal field near the edges are
+// moved in whole, so every sample of every element stays inside (the edge is the canvas's).
+TEST(Brush, FilledSticksStayWhollyInsideTheCanvas) {
+    BrushCanvas canvas(Domain::box({0, 0, 0}, {30, 24, 0}, 2));
+    const int k = canvas.add_exemplar("sticks", load(examples + "sticks_2d.json"));
+    Stroke diagonal, vertical;
+    diagonal.points = {{2, 2, 0}, {28, 22, 0}};
+    vertical.points = {{28, 2, 0}, {28, 22, 0}};
+    canvas.direct(diagonal);
+    canvas.direct(vertical);
+    canvas.fill({k});
+    const Arrangement& a = canvas.arrangement();
+    ASSERT_GT(a.elements.size(), 100u);
+    int outside = 0;
+    for (const Sample& s : a.samples)
+        if (s.p.x < -1e-9 || s.p.x > 30 + 1e-9 || s.p.y < -1e-9 || s.p.y > 24 + 1e-9) ++outside;
+    EXPECT_EQ(outside, 0) << "samples outside the 30 x 24 canvas";
+}

@@ -9,7 +9,7 @@ export const CANVAS_PRESETS = [
   { label: '2D · disk with a hole', canvas: 'polygon:examples/domain_disk_with_hole.json' },
   { label: '3D · box 20 × 20 × 12', canvas: 'box:0,0,20,20,0,12' },
   { label: '3D · bowl (mesh volume)', canvas: 'mesh:examples/scenes/bowl.obj' },
-  { label: '3D · blob (shell)', canvas: 'shell:examples/blob.obj,1' },
+  { label: '3D · blob (surface)', canvas: 'shell:examples/blob.obj,1' },
 ];
 
 export function canvasDimension(text) {
