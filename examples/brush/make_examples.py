@@ -87,28 +87,24 @@ def vines(seed=5):
     return layer("vine", False, "#2ca02c", out)
 
 
+def sphere_point(centre, radius, latitude, longitude):
+    """The point of a sphere at `latitude` and `longitude` (radians), rounded to 3 decimals."""
+    return [round(centre[0] + radius * math.cos(latitude) * math.cos(longitude), 3),
+            round(centre[1] + radius * math.cos(latitude) * math.sin(longitude), 3),
+            round(centre[2] + radius * math.sin(latitude), 3)]
+
+
 def arc(centre, radius, start, end, steps, tilt=0.0):
     """Points of a circle of latitude `tilt` (radians) on a sphere, from angle start to end
     (degrees): the canvas moves them onto the blob's surface."""
-    pts = []
-    for k in range(steps + 1):
-        a = math.radians(start + (end - start) * k / steps)
-        pts.append([round(centre[0] + radius * math.cos(tilt) * math.cos(a), 3),
-                    round(centre[1] + radius * math.cos(tilt) * math.sin(a), 3),
-                    round(centre[2] + radius * math.sin(tilt), 3)])
-    return pts
+    return [sphere_point(centre, radius, tilt, math.radians(start + (end - start) * k / steps))
+            for k in range(steps + 1)]
 
 
 def meridian(centre, radius, azimuth, start, end, steps):
     """A great circle through the poles at `azimuth` (degrees), latitudes start to end."""
-    az = math.radians(azimuth)
-    pts = []
-    for k in range(steps + 1):
-        t = math.radians(start + (end - start) * k / steps)
-        pts.append([round(centre[0] + radius * math.cos(t) * math.cos(az), 3),
-                    round(centre[1] + radius * math.cos(t) * math.sin(az), 3),
-                    round(centre[2] + radius * math.sin(t), 3)])
-    return pts
+    return [sphere_point(centre, radius, math.radians(start + (end - start) * k / steps), math.radians(azimuth))
+            for k in range(steps + 1)]
 
 
 def surface_session():
