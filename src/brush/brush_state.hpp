@@ -25,6 +25,9 @@ struct InputNeighbourhood {
     std::vector<Vec3> offsets;
     std::vector<double> weights;
     std::vector<int> types;
+    // 1 / (weights[k] + weight): Eq. 1's w_scale is (summed output weights) * inverse_summed[k],
+    // a product in the pairing's inner loop instead of a division.
+    std::vector<double> inverse_summed;
 };
 
 struct PaletteEntry {

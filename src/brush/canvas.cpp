@@ -351,12 +351,16 @@ BrushReport BrushCanvas::optimize(int iterations) {
     if (iterations < 0) throw Error(ErrorKind::option, "iterations must be >= 0, got " + std::to_string(iterations));
     Transaction t(st);
     const std::vector<char> movable = movable_samples(st);
+    // Every sample is searched (the locked ones' matches enter the energy, not the solve), so
+    // that each measured state's energies are those of the whole canvas, as energies() gives.
+    const std::vector<char> everything(st.arrangement.samples.size(), 1);
     std::vector<SampleMatch> matches;
     BrushReport r;
     // The alternation is a heuristic (the search re-pairs every iteration), so the energy need
     // not fall at every iteration: the best state seen is kept. A state is measured by the
     // search that follows its orientation solve (only samples and orientations change here).
     double best = std::numeric_limits<double>::infinity();
+    Energies best_energies, kept;
     Arrangement best_arrangement;
     std::vector<Vec3> best_direction;
     for (int it = 0; it <= iterations; ++it) {
@@ -368,22 +372,25 @@ BrushReport BrushCanvas::optimize(int iterations) {
             const OrientationResult o = solve_orientations(st, movable);  // Eq. 5-7 (L-BFGS)
             if (o.bound_hit) ++r.lbfgs_bound_hits;
         }
-        search_matches(st, movable, matches);  // Eq. 1-2
-        const double now = weighted_energy(st.options, measure_energies(st, matches));
+        search_matches(st, everything, matches);  // Eq. 1-2
+        const Energies measured = measure_energies(st, matches);
+        const double now = weighted_energy(st.options, measured);
         const bool improved = now < best;
         if (it == iterations) {
+            kept = measured;
             if (!improved && iterations > 0) {
                 st.arrangement = std::move(best_arrangement);
                 st.direction = std::move(best_direction);
+                kept = best_energies;
                 r.kept_earlier = true;
             }
             break;
         }
-        if (improved) best = now, best_arrangement = st.arrangement, best_direction = st.direction;
+        if (improved) best = now, best_energies = measured, best_arrangement = st.arrangement, best_direction = st.direction;
         if (assign_positions(st, movable, matches)) ++r.solve_bound_hits;  // Eq. 1, 3, 4
         ++r.iterations;
     }
-    const Energies e = energies();
+    const Energies& e = kept;
     r.energy = e.distribution + e.conflict + e.graph + e.alignment + e.continuity + e.rigidity;
     st.arrangement.stats.final_energy = r.energy;
     r.seconds = seconds_since(start);

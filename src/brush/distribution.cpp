@@ -18,6 +18,7 @@ constexpr double kTypeMismatch = 0.25;
 // Pairs of the assignment: at most this share of the exemplar's spacing apart (the threshold c
 // of the partial pair assignment, as growth uses it).
 constexpr double kPairThreshold = 0.4;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 struct LocalNeighbour {
     Vec3 offset;     // R(o(s_o))^-1 (p(s'_o) - p(s_o))
@@ -28,8 +29,9 @@ struct LocalNeighbour {
 
 struct Scratch {
     std::vector<int> found;
+    std::vector<std::pair<double, int>> by_distance;
     std::vector<LocalNeighbour> local;
-    std::vector<char> used;
+    std::vector<double> taken;  // per input neighbour: 0, or infinity once paired (no branch in the scan)
     std::vector<int> paired, best_paired;
 };
 
@@ -39,7 +41,8 @@ struct Placement {
     Vec3 origin;
     Quat frame;
     double scale;
-    bool inside(const Vec3& offset) const { return canvas.inside(origin + frame.rotate(offset * scale)); }
+    bool whole = false;  // the neighbourhood's disk lies in the canvas: every offset does
+    bool inside(const Vec3& offset) const { return whole || canvas.inside(origin + frame.rotate(offset * scale)); }
 };
 
 // Eq. 1 for one candidate input neighbourhood, greedy pairing in order of output distance;
@@ -49,24 +52,32 @@ struct Placement {
 // input neighbourhoods, and the arrangement contracts round after round.
 double neighbourhood_cost(const InputNeighbourhood& in, double own_weight, const std::vector<LocalNeighbour>& local,
                           double r2, double bound, const Placement& place, Scratch& scratch) {
-    scratch.used.assign(in.offsets.size(), 0);
+    scratch.taken.assign(in.offsets.size(), 0.0);
     scratch.paired.assign(local.size(), -1);
     double cost = 0.0;
-    for (size_t j = 0; j < local.size() && cost < bound; ++j) {
+    const double mismatch = kTypeMismatch * r2;
+    // Input neighbours beyond the output's count stay unpaired, and cost r2 each when the
+    // whole disk is in the canvas: the pairing stops once that would reach the bound.
+    const double reserve = place.whole ? r2 * static_cast<double>(in.offsets.size() > local.size() ? in.offsets.size() - local.size() : 0) : 0.0;
+    for (size_t j = 0; j < local.size() && cost + reserve < bound; ++j) {
         double best = r2;
         int best_k = -1;
+        const Vec3& l = local[j].offset;
+        const double summed = local[j].weight + own_weight;
+        const int type = local[j].type;
         for (size_t k = 0; k < in.offsets.size(); ++k) {
-            if (scratch.used[k]) continue;
-            const double w_scale = (local[j].weight + own_weight) / (in.weights[k] + in.weight);  // Eq. 1
-            double c = squared_norm(local[j].offset - in.offsets[k] * w_scale);
-            if (in.types[k] != local[j].type) c += kTypeMismatch * r2;
+            const double w_scale = summed * in.inverse_summed[k];  // Eq. 1
+            const Vec3& o = in.offsets[k];
+            const double dx = l.x - o.x * w_scale, dy = l.y - o.y * w_scale, dz = l.z - o.z * w_scale;
+            double c = dx * dx + dy * dy + dz * dz + scratch.taken[k];
+            c += in.types[k] != type ? mismatch : 0.0;
             if (c < best) best = c, best_k = static_cast<int>(k);
         }
         cost += best;
-        if (best_k >= 0) scratch.used[static_cast<size_t>(best_k)] = 1, scratch.paired[j] = best_k;
+        if (best_k >= 0) scratch.taken[static_cast<size_t>(best_k)] = kInfinity, scratch.paired[j] = best_k;
     }
     for (size_t k = 0; k < in.offsets.size() && cost < bound; ++k)
-        if (!scratch.used[k] && place.inside(in.offsets[k])) cost += r2;
+        if (scratch.taken[k] == 0.0 && place.inside(in.offsets[k])) cost += r2;
     return cost;
 }
 
@@ -79,7 +90,7 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
     m.cost = 0.0;
     const Quat frame = st.frame_of_sample(s);
     const Quat inverse = frame.conjugate();
-    nb.gather(st, s, entry.radius, scratch.found);
+    nb.gather(st, s, entry.radius, scratch.found, scratch.by_distance);
     scratch.local.clear();
     for (int o : scratch.found) {
         const Element& oe = arr.elements[arr.samples[o].element];
@@ -87,7 +98,8 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
                                  oe.scale * st.weight_of_sample(o) / e.scale, oe.type, o});
     }
     const double own_weight = st.weight_of_sample(s);
-    const Placement place{st.space(), arr.samples[s].p, frame, e.scale};
+    const Placement place{st.space(), arr.samples[s].p, frame, e.scale,
+                          st.space().distance_to_boundary(arr.samples[s].p) >= entry.radius * e.scale};
     const double r2 = entry.radius * entry.radius;
     const double pair_limit2 = kPairThreshold * kPairThreshold * entry.spacing * entry.spacing;
     double best = std::numeric_limits<double>::infinity();
@@ -96,10 +108,12 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
     m.neighbourhood = -1;
     auto consider = [&](int candidate) {
         const InputNeighbourhood& in = entry.neighbourhoods[candidate];
-        // Output neighbours beyond the input's count are unpaired whatever the pairing.
-        const double floor = r2 * static_cast<double>(std::max<std::ptrdiff_t>(
-                                      0, static_cast<std::ptrdiff_t>(scratch.local.size()) -
-                                             static_cast<std::ptrdiff_t>(in.offsets.size())));
+        // Output neighbours beyond the input's count are unpaired whatever the pairing, and so
+        // are input neighbours beyond the output's, each charged when it falls in the canvas
+        // (surely so when the whole disk does): a lower bound that skips most candidates.
+        const std::ptrdiff_t surplus = static_cast<std::ptrdiff_t>(scratch.local.size()) -
+                                       static_cast<std::ptrdiff_t>(in.offsets.size());
+        const double floor = r2 * static_cast<double>(place.whole ? std::abs(surplus) : std::max<std::ptrdiff_t>(0, surplus));
         if (floor >= best) return;
         const double c = neighbourhood_cost(in, own_weight, scratch.local, r2, best, place, scratch);
         if (c < best) best = c, m.neighbourhood = candidate, scratch.best_paired = scratch.paired;
@@ -114,7 +128,7 @@ void match_sample(const BrushCanvas::Impl& st, const OutputNeighbours& nb, int s
     for (size_t j = 0; j < scratch.local.size(); ++j) {
         const int k = scratch.best_paired[j];
         if (k < 0) continue;
-        const double w_scale = (scratch.local[j].weight + own_weight) / (in.weights[k] + in.weight);
+        const double w_scale = (scratch.local[j].weight + own_weight) * in.inverse_summed[k];
         const Vec3 target = in.offsets[k] * w_scale;
         // A pair further apart than the pairing threshold is more likely a wrong pairing than a
         // displaced neighbour: it is charged by the search but predicts nothing.
@@ -133,17 +147,17 @@ void OutputNeighbours::build(const BrushCanvas::Impl& st) {
     grid.build(points, max_radius > 0.0 ? max_radius : 1.0, st.dimension);
 }
 
-void OutputNeighbours::gather(const BrushCanvas::Impl& st, int s, double radius, std::vector<int>& out) const {
-    out.clear();
+void OutputNeighbours::gather(const BrushCanvas::Impl& st, int s, double radius, std::vector<int>& out,
+                              std::vector<std::pair<double, int>>& by_distance) const {
+    by_distance.clear();
     const int element = st.arrangement.samples[s].element;
-    grid.for_each_within(points[s], radius, [&](int o, double) {
-        if (st.arrangement.samples[o].element != element) out.push_back(o);
+    grid.for_each_within(points[s], radius, [&](int o, double d2) {
+        if (st.arrangement.samples[o].element != element) by_distance.emplace_back(d2, o);
     });
     // Nearest first (ties by index), so that the greedy pairing does not depend on the grid.
-    std::sort(out.begin(), out.end(), [&](int a, int b) {
-        const double da = squared_norm(points[a] - points[s]), db = squared_norm(points[b] - points[s]);
-        return da != db ? da < db : a < b;
-    });
+    std::sort(by_distance.begin(), by_distance.end());
+    out.clear();
+    for (const auto& [d2, o] : by_distance) out.push_back(o);
 }
 
 void search_matches(const BrushCanvas::Impl& st, const std::vector<char>& movable, std::vector<SampleMatch>& matches) {

@@ -4,6 +4,7 @@
 // greedy pairing of its neighbours.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "brush/brush_state.hpp"
@@ -28,7 +29,9 @@ struct OutputNeighbours {
     std::vector<Vec3> points;
     double max_radius = 0.0;
     void build(const BrushCanvas::Impl& state);
-    void gather(const BrushCanvas::Impl& state, int sample, double radius, std::vector<int>& out) const;
+    // `by_distance`: the caller's scratch, kept between calls.
+    void gather(const BrushCanvas::Impl& state, int sample, double radius, std::vector<int>& out,
+                std::vector<std::pair<double, int>>& by_distance) const;
 };
 
 // One match per sample of the arrangement (movable[s] false: left empty).

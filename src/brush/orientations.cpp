@@ -4,6 +4,7 @@
 #include <LBFGS.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -11,6 +12,7 @@
 
 #include "brush/canvas_surface.hpp"
 #include "brush/strokes.hpp"
+#include "core/parallel.hpp"
 
 namespace tessera::brush {
 
@@ -107,6 +109,66 @@ void add_tangent_bases(const BrushCanvas::Impl& st, FieldProblem& fp) {
     }
 }
 
+// Eq. 5 per sample: its weight w exp(-d^2 / sigma^2) by its distance d to the strokes, and
+// O(p), the direction of the stroke there.
+void add_alignment_terms(const BrushCanvas::Impl& st, FieldProblem& fp, double weight) {
+    const Arrangement& arr = st.arrangement;
+    const int n = static_cast<int>(arr.samples.size());
+    fp.align_w.assign(n, 0.0);
+    fp.align_to.assign(n, Vec3{});
+    core::parallel_for(
+        n, core::resolve_threads(st.options.threads),
+        [&](int begin, int end, int) {
+            for (int s = begin; s < end; ++s) {
+                const StrokePoint sp = closest_stroke_point(st.strokes, arr.samples[s].p);
+                const double sigma = sigma_of(st, s);
+                if (std::isfinite(sp.distance)) fp.align_w[s] = weight * std::exp(-sp.distance * sp.distance / (sigma * sigma));
+                // O(p) of Eq. 5; on a surface its tangent part at the sample, which o(s) can reach.
+                fp.align_to[s] = tangent_at(st, sp.tangent, arr.samples[s].p);
+            }
+        },
+        256);
+}
+
+// The objective sees a pair only through the directions of its two ends: the variable group
+// of a movable sample, the fixed direction of another. Pairs with the same two ends (the 5 x 5
+// sample pairs of two rigid sticks share two groups) become one with the summed weight, which
+// is the same sum of Eq. 6 terms in a twentieth of the work; pairs within one group (a rigid
+// element with itself) are constant and dropped.
+void merge_pairs(FieldProblem& fp) {
+    // An end's key: its group, or past the groups, its sample when fixed.
+    const int samples = static_cast<int>(fp.group.size());
+    const int keys = fp.groups + samples;
+    auto key = [&](int s) { return fp.group[s] >= 0 ? fp.group[s] : fp.groups + s; };
+    // Bucketed by the lower key (a counting sort, stable), then merged within a bucket through
+    // a table of the higher keys seen in it: linear, and in an order fixed by the input.
+    std::vector<int> first(static_cast<size_t>(keys) + 1, 0);
+    for (Pair& p : fp.pairs) {
+        if (key(p.a) > key(p.b)) std::swap(p.a, p.b);
+        ++first[static_cast<size_t>(key(p.a)) + 1];
+    }
+    for (int k = 0; k < keys; ++k) first[k + 1] += first[k];
+    std::vector<Pair> bucketed(fp.pairs.size());
+    std::vector<int> next(first.begin(), first.end() - 1);
+    for (const Pair& p : fp.pairs) bucketed[static_cast<size_t>(next[key(p.a)]++)] = p;
+    std::vector<int> seen_in(static_cast<size_t>(keys), -1), slot(static_cast<size_t>(keys), 0);
+    std::vector<Pair> merged;
+    merged.reserve(fp.pairs.size());
+    for (int ka = 0; ka < keys; ++ka)
+        for (int i = first[ka]; i < first[ka + 1]; ++i) {
+            const Pair& p = bucketed[static_cast<size_t>(i)];
+            const int kb = key(p.b);
+            if (kb == ka) continue;
+            if (seen_in[kb] == ka) {
+                merged[static_cast<size_t>(slot[kb])].weight += p.weight;
+            } else {
+                seen_in[kb] = ka, slot[kb] = static_cast<int>(merged.size());
+                merged.push_back(p);
+            }
+        }
+    fp.pairs = std::move(merged);
+}
+
 FieldProblem build_problem(const BrushCanvas::Impl& st, const std::vector<char>& movable, bool with_weights) {
     const Arrangement& arr = st.arrangement;
     const int n = static_cast<int>(arr.samples.size());
@@ -124,18 +186,10 @@ FieldProblem build_problem(const BrushCanvas::Impl& st, const std::vector<char>&
     fp.vars = fp.dim;
     if (st.surface && with_weights) add_tangent_bases(st, fp);
     fp.fixed = st.direction;
-    fp.align_w.assign(n, 0.0);
-    fp.align_to.assign(n, Vec3{});
-    for (int s = 0; s < n; ++s) {
-        const StrokePoint sp = closest_stroke_point(st.strokes, arr.samples[s].p);
-        const double sigma = sigma_of(st, s);
-        if (std::isfinite(sp.distance))
-            fp.align_w[s] = (with_weights ? o.w_alignment : 1.0) * std::exp(-sp.distance * sp.distance / (sigma * sigma));  // Eq. 5
-        // O(p) of Eq. 5; on a surface its tangent part at the sample, which o(s) can reach.
-        fp.align_to[s] = tangent_at(st, sp.tangent, arr.samples[s].p);
-    }
+    add_alignment_terms(st, fp, with_weights ? o.w_alignment : 1.0);
     add_continuity_pairs(st, fp, with_weights ? o.w_continuity : 1.0);
     add_rigidity_pairs(st, fp, with_weights ? o.w_rigidity : 1.0);
+    merge_pairs(fp);
     return fp;
 }
 
@@ -248,11 +302,11 @@ OrientationResult solve_orientations(BrushCanvas::Impl& st, const std::vector<ch
 }
 
 FieldEnergies field_energies(const BrushCanvas::Impl& st) {
-    const std::vector<char> none(st.arrangement.samples.size(), 0);
-    const FieldProblem fp = build_problem(st, none, false);
+    FieldProblem fp;
+    add_alignment_terms(st, fp, 1.0);
     FieldEnergies e;
-    for (size_t s = 0; s < fp.group.size(); ++s) e.alignment += fp.align_w[s] * squared_norm(st.direction[s] - fp.align_to[s]);
-    // With no sample movable, every pair is skipped by build_problem; count them directly.
+    for (size_t s = 0; s < fp.align_w.size(); ++s) e.alignment += fp.align_w[s] * squared_norm(st.direction[s] - fp.align_to[s]);
+    // Eq. 6 and 7 over every pair, movable or not.
     OutputNeighbours nb;
     nb.build(st);
     const Arrangement& arr = st.arrangement;

@@ -64,6 +64,7 @@ void index_neighbourhoods(PaletteEntry& entry) {
                 n.offsets.push_back(o.p - s.p);
                 n.weights.push_back(entry.weights[ot][o.sample_id]);
                 n.types.push_back(entry.out_type[ot]);
+                n.inverse_summed.push_back(1.0 / (n.weights.back() + n.weight));
             });
             entry.by_type[type][s.sample_id].push_back(static_cast<int>(entry.neighbourhoods.size()));
             entry.neighbourhoods.push_back(std::move(n));

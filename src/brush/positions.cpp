@@ -1,10 +1,13 @@
 // The assignment step of the brush solver (brush/positions.hpp).
 #include "brush/positions.hpp"
 
+#include <array>
+
 #include <Eigen/Sparse>
 #include <Eigen/IterativeLinearSolvers>
 
 #include "brush/canvas_surface.hpp"
+#include "core/parallel.hpp"
 #include "tessera/error.hpp"
 #include "tessera/field.hpp"
 
@@ -18,35 +21,75 @@ constexpr double kAnchor = 0.01;
 // Bound on the conjugate-gradient iterations of one position solve (reported when hit).
 constexpr int kSolveIterations = 400;
 
-// Normal equations of rows "x_b - x_a = t" with weights, over the movable samples.
+// The unknowns of the position solve. A deformable element's samples are unknowns of their
+// own; a rigid element is one unknown, its translation: its samples sit at fixed offsets from
+// it (its shape in the frame of its current o(s), as restore_shapes puts it back), so its
+// graph rows are constant and its pairs move the whole element. This is the least-squares
+// translation of the rigid body, and a fifth of the unknowns of a 5-sample stick.
+struct Unknowns {
+    std::vector<int> index;    // sample -> unknown, -1 when fixed
+    std::vector<Vec3> offset;  // sample -> its position minus its unknown's (0 unless rigid)
+    int count = 0;
+};
+
+Unknowns make_unknowns(const BrushCanvas::Impl& st, const std::vector<char>& movable) {
+    const Arrangement& arr = st.arrangement;
+    Unknowns u;
+    u.index.assign(arr.samples.size(), -1);
+    u.offset.assign(arr.samples.size(), Vec3{});
+    for (int i = 0; i < static_cast<int>(arr.elements.size()); ++i) {
+        const Element& e = arr.elements[i];
+        if (!movable[e.first_sample]) continue;
+        const OutType& ot = st.out_types[e.type];
+        if (!st.palette[ot.kappa].exemplar.types[ot.type].rigid || e.sample_count == 1) {
+            for (int k = 0; k < e.sample_count; ++k) u.index[e.first_sample + k] = u.count++;
+            continue;
+        }
+        Vec3 c;
+        for (int k = 0; k < e.sample_count; ++k) c += arr.samples[e.first_sample + k].p;
+        c = c / static_cast<double>(e.sample_count);
+        const Quat frame = st.frame_of_element(i, c);
+        for (int k = 0; k < e.sample_count; ++k) {
+            u.index[e.first_sample + k] = u.count;
+            u.offset[e.first_sample + k] = frame.rotate(st.reference[e.first_sample + k]) * e.scale;
+        }
+        ++u.count;
+    }
+    return u;
+}
+
+// Normal equations of rows "x_b - x_a = t" with weights, over the unknowns: x_s is its
+// unknown plus its offset, or its current place when fixed.
 struct NormalEquations {
-    const std::vector<int>& unknown;  // sample -> unknown index, -1 when fixed
+    const Unknowns& u;
     const std::vector<Sample>& samples;
     std::vector<Eigen::Triplet<double>> triplets;
     Eigen::MatrixXd rhs;
 
-    NormalEquations(const std::vector<int>& u, const std::vector<Sample>& s, int n)
-        : unknown(u), samples(s), rhs(Eigen::MatrixXd::Zero(n, 3)) {}
+    NormalEquations(const Unknowns& unknowns, const std::vector<Sample>& s)
+        : u(unknowns), samples(s), rhs(Eigen::MatrixXd::Zero(unknowns.count, 3)) {}
 
     void add_rhs(int i, const Vec3& v, double w) {
         for (int c = 0; c < 3; ++c) rhs(i, c) += w * v[c];
     }
     void difference(int a, int b, const Vec3& t, double w) {
-        const int ia = unknown[a], ib = unknown[b];
+        const int ia = u.index[a], ib = u.index[b];
         if (ia < 0 && ib < 0) return;
+        if (ia == ib) return;  // two samples of one rigid element: a constant row
         if (ia >= 0 && ib >= 0) {
+            const Vec3 between = t - u.offset[b] + u.offset[a];
             triplets.emplace_back(ia, ia, w);
             triplets.emplace_back(ib, ib, w);
             triplets.emplace_back(ia, ib, -w);
             triplets.emplace_back(ib, ia, -w);
-            add_rhs(ib, t, w);
-            add_rhs(ia, t, -w);
+            add_rhs(ib, between, w);
+            add_rhs(ia, between, -w);
         } else if (ib >= 0) {
             triplets.emplace_back(ib, ib, w);
-            add_rhs(ib, samples[a].p + t, w);
+            add_rhs(ib, samples[a].p + t - u.offset[b], w);
         } else {
             triplets.emplace_back(ia, ia, w);
-            add_rhs(ia, samples[b].p - t, w);
+            add_rhs(ia, samples[b].p - t - u.offset[a], w);
         }
     }
 };
@@ -54,7 +97,7 @@ struct NormalEquations {
 void add_distribution_rows(const BrushCanvas::Impl& st, const std::vector<SampleMatch>& matches, NormalEquations& eq) {
     const double w = st.options.w_distribution;
     for (int s = 0; s < static_cast<int>(matches.size()); ++s) {
-        if (eq.unknown[s] < 0 || matches[s].pairs.empty()) continue;
+        if (eq.u.index[s] < 0 || matches[s].pairs.empty()) continue;
         const Quat frame = st.frame_of_sample(s);
         for (const NeighbourPair& p : matches[s].pairs) eq.difference(s, p.other, frame.rotate(p.target), w);  // Eq. 1
     }
@@ -75,7 +118,7 @@ void add_graph_rows(const BrushCanvas::Impl& st, NormalEquations& eq) {
     const double w = st.options.w_graph;
     const Arrangement& arr = st.arrangement;
     for (const Element& e : arr.elements) {
-        if (eq.unknown[e.first_sample] < 0) continue;
+        if (eq.u.index[e.first_sample] < 0) continue;
         const OutType& ot = st.out_types[e.type];
         for (const auto& edge : st.palette[ot.kappa].graph[ot.type]) {
             const int a = e.first_sample + edge[0], b = e.first_sample + edge[1];
@@ -141,14 +184,18 @@ void restore_shapes(BrushCanvas::Impl& st, const std::vector<char>& movable, con
 bool assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, const std::vector<SampleMatch>& matches) {
     Arrangement& arr = st.arrangement;
     const int n = static_cast<int>(arr.samples.size());
-    std::vector<int> unknown(static_cast<size_t>(n), -1);
-    int count = 0;
-    for (int s = 0; s < n; ++s)
-        if (movable[s]) unknown[s] = count++;
+    const Unknowns u = make_unknowns(st, movable);
+    const int count = u.count;
     if (count == 0) return false;
-    NormalEquations eq(unknown, arr.samples, count);
+    NormalEquations eq(u, arr.samples);
+    // One allocation for the rows' entries (growing by doubling copied and page-faulted a
+    // large buffer several times per solve): 4 per pair and graph edge, 1 per anchor, and a
+    // first guess of 4 per sample for the conflicts.
+    size_t rows = 0;
+    for (const SampleMatch& m : matches) rows += m.pairs.size();
+    eq.triplets.reserve(static_cast<size_t>(n) * 5 + 4 * (rows + arr.samples.size()));
     for (int s = 0; s < n; ++s)
-        if (unknown[s] >= 0) eq.triplets.emplace_back(unknown[s], unknown[s], kAnchor), eq.add_rhs(unknown[s], arr.samples[s].p, kAnchor);
+        if (u.index[s] >= 0) eq.triplets.emplace_back(u.index[s], u.index[s], kAnchor), eq.add_rhs(u.index[s], arr.samples[s].p - u.offset[s], kAnchor);
     OutputNeighbours nb;
     nb.build(st);
     add_distribution_rows(st, matches, eq);
@@ -159,24 +206,33 @@ bool assign_positions(BrushCanvas::Impl& st, const std::vector<char>& movable, c
     // Conjugate gradients from the current positions, bounded: the pairs of a 3D neighbourhood
     // make a sparse Cholesky factor fill in (it took a third of a volume's fill), while the
     // system is symmetric positive definite (the anchor) and the start is close to the answer.
-    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
-    solver.setMaxIterations(kSolveIterations);
-    solver.setTolerance(1e-8);
-    solver.compute(system);
     Eigen::MatrixXd start(count, 3);
     for (int s = 0; s < n; ++s)
-        if (unknown[s] >= 0)
-            for (int c = 0; c < 3; ++c) start(unknown[s], c) = arr.samples[s].p[c];
+        if (u.index[s] >= 0)
+            for (int c = 0; c < 3; ++c) start(u.index[s], c) = arr.samples[s].p[c] - u.offset[s][c];
     Eigen::MatrixXd x(count, 3);
-    bool bound_hit = false;
-    for (int c = 0; c < 3; ++c) {
-        x.col(c) = solver.solveWithGuess(eq.rhs.col(c), start.col(c));
-        bound_hit = bound_hit || solver.info() != Eigen::Success;
-    }
+    // The coordinates are independent systems with one matrix: solved side by side, each by
+    // its own solver (Eigen's keeps per-solve state), so the bits do not depend on threads.
+    const int axes = st.dimension == 3 ? 3 : 2;  // in 2D z stays 0
+    x.col(2).setZero();
+    std::array<char, 3> hit{};
+    core::parallel_for(axes, core::resolve_threads(st.options.threads), [&](int begin, int end, int) {
+        Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
+        solver.setMaxIterations(kSolveIterations);
+        solver.setTolerance(1e-8);
+        solver.compute(system);
+        for (int c = begin; c < end; ++c) {
+            x.col(c) = solver.solveWithGuess(eq.rhs.col(c), start.col(c));
+            hit[static_cast<size_t>(c)] = solver.info() != Eigen::Success;
+        }
+    });
+    const bool bound_hit = hit[0] || hit[1] || hit[2];
     const std::vector<Sample> before = arr.samples;
     for (int s = 0; s < n; ++s)
-        if (unknown[s] >= 0)
-            arr.samples[s].p = Vec3{x(unknown[s], 0), x(unknown[s], 1), st.dimension == 3 ? x(unknown[s], 2) : 0.0};
+        if (u.index[s] >= 0) {
+            const int i = u.index[s];
+            arr.samples[s].p = Vec3{x(i, 0), x(i, 1), st.dimension == 3 ? x(i, 2) : 0.0} + u.offset[s];
+        }
     restore_shapes(st, movable, before);
     snap_elements(st, 0, static_cast<int>(arr.elements.size()));  // on a surface: back onto it, o(s) tangent
     update_element_poses(st);
