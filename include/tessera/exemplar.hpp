@@ -29,6 +29,10 @@ struct Sample {
     double time = 0.0;    // time stamp; 0 for static data (space-time synthesis later)
 };
 
+// How the samples of an element hang together in space-time synthesis (animation.hpp):
+// automatic = none for single-sample elements and thread for multi-sample ones.
+enum class ElementTopology { automatic, none, thread, sheet };
+
 struct ElementType {
     std::string name;     // class name, e.g. "tree", "stick"; unique within an exemplar
     bool rigid = true;    // rigid elements keep the exact shape of an input element
@@ -50,6 +54,10 @@ struct ElementType {
     // brush_sample_weights() and brush_element_graph().
     std::vector<double> weights = {};
     std::vector<std::array<int, 2>> graph = {};
+    // Space-time synthesis (animation.hpp): the type's topology, and for a sheet the number
+    // of columns of its sample grid (sample id = row x columns + column).
+    ElementTopology topology = ElementTopology::automatic;
+    int sheet_columns = 0;
 };
 
 struct Element {

@@ -9,6 +9,8 @@
 // The writer emits exactly the columns the reader understands, with numbers in
 // the shortest form that reads back exactly, so that to_csv -> parse_csv gives
 // the same elements back (the domain and type flags are not part of CSV).
+// Animations (a frame or t column) are assembled from the rows by animation_csv.cpp,
+// through the pieces exposed in io_util.hpp; parse_csv gives their frame 0.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -46,6 +48,8 @@ enum class Column {
     id,
     time,
     locked,
+    frame,
+    t,
     attribute
 };
 
@@ -66,13 +70,18 @@ const std::map<std::string, Column, std::less<>>& known_columns() {
                                                                        {"scale", Column::scale},
                                                                        {"id", Column::id},
                                                                        {"time", Column::time},
-                                                                       {"locked", Column::locked}};
+                                                                       {"locked", Column::locked},
+                                                                       {"frame", Column::frame},
+                                                                       {"t", Column::t}};
     return columns;
 }
 
-// Splits one line into fields. Fields may be double-quoted ("a, b" and "say ""hi""")
-// so that class names with commas survive a round trip; quoted fields do not span lines.
-std::vector<std::string> split_fields(std::string_view line, const std::string& source, int line_number) {
+}  // namespace
+
+// Fields may be double-quoted ("a, b" and "say ""hi""") so that class names with commas
+// survive a round trip; quoted fields do not span lines.
+std::vector<std::string> io_detail::split_csv_fields(std::string_view line, const std::string& source,
+                                                     int line_number) {
     std::vector<std::string> fields;
     size_t i = 0;
     while (true) {
@@ -111,32 +120,17 @@ std::vector<std::string> split_fields(std::string_view line, const std::string& 
     return fields;
 }
 
-// One data row, parsed and checked.
-struct Row {
-    int line = 0;
-    Vec3 p;
-    std::string cls = "default";
-    std::string element;  // element key (empty without an element column)
-    long long sample = 0;
-    double radius = 0.0;
-    std::optional<double> angle;
-    std::optional<Quat> q;
-    double scale = 1.0;
-    std::optional<std::uint64_t> id;
-    double time = 0.0;
-    bool locked = false;
-    std::vector<double> attributes;
-};
+namespace {
 
+// Reads the header and the rows of a CSV file, each row checked on its own.
 class CsvReader {
 public:
-    CsvReader(const std::string& source, const LoadOptions& options) : source_(source), options_(options) {}
+    explicit CsvReader(const std::string& source) : source_(source) {}
 
-    Exemplar read(std::string_view text) {
+    CsvTable read(std::string_view text) {
         // A UTF-8 byte order mark (spreadsheets write one) is not part of the first column name.
         if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-        std::vector<Row> rows;
-        bool have_header = false;
+        CsvTable table;
         int line_number = 0;
         size_t start = 0;
         while (start <= text.size()) {
@@ -146,21 +140,28 @@ public:
             start = end + 1;
             const std::string_view content = trim(line);
             if (content.empty() || content.front() == '#') continue;
-            const auto fields = split_fields(line, source_, line_number);
-            if (!have_header) {
+            const auto fields = split_csv_fields(line, source_, line_number);
+            if (table.header_line == 0) {
                 read_header(fields, line_number);
-                have_header = true;
+                table.header_line = line_number;
             } else {
-                rows.push_back(read_row(fields, line_number));
+                table.rows.push_back(read_row(fields, line_number));
             }
         }
-        if (rows.empty()) fail_input(source_, 0, "no elements (the exemplar is empty)");
-        return build(rows);
+        if (table.rows.empty()) fail_input(source_, 0, "no elements (the exemplar is empty)");
+        table.dimension = dimension_;
+        table.attribute_names = attribute_names_;
+        table.element = has(Column::element);
+        table.sample = has(Column::sample);
+        table.id = has(Column::id);
+        table.time = has(Column::time);
+        table.frame = has(Column::frame);
+        table.t = has(Column::t);
+        return table;
     }
 
 private:
     std::string source_;
-    LoadOptions options_;
     std::vector<Column> roles_;
     std::vector<std::string> names_;  // column names as written in the header
     std::map<Column, size_t> index_;  // column role -> field index (known columns only)
@@ -221,12 +222,20 @@ private:
         return number(fields, index_.at(c), line);
     }
 
-    Row read_row(const std::vector<std::string>& fields, int line) const {
+    // An integer column (sample, frame).
+    long long integer(const std::vector<std::string>& fields, Column c, const char* name, int line) const {
+        const double value = number(fields, c, line);
+        if (value != std::floor(value) || std::abs(value) > 1e15)
+            fail_input(source_, line, std::string(name) + " is not an integer: '" + fields[index_.at(c)] + "'");
+        return static_cast<long long>(value);
+    }
+
+    CsvRow read_row(const std::vector<std::string>& fields, int line) const {
         if (fields.size() != roles_.size())
             fail_input(source_, line,
                        "expected " + std::to_string(roles_.size()) + " fields, got " +
                            std::to_string(fields.size()));
-        Row row;
+        CsvRow row;
         row.line = line;
         row.p.x = number(fields, Column::x, line);
         row.p.y = number(fields, Column::y, line);
@@ -239,13 +248,9 @@ private:
             row.element = fields[index_.at(Column::element)];
             if (row.element.empty()) fail_input(source_, line, "element is empty");
         }
-        if (has(Column::sample)) {
-            const double s = number(fields, Column::sample, line);
-            if (s != std::floor(s) || std::abs(s) > 1e15)
-                fail_input(source_, line,
-                           "sample is not an integer: '" + fields[index_.at(Column::sample)] + "'");
-            row.sample = static_cast<long long>(s);
-        }
+        if (has(Column::sample)) row.sample = integer(fields, Column::sample, "sample", line);
+        if (has(Column::frame)) row.frame = integer(fields, Column::frame, "frame", line);
+        if (has(Column::t)) row.t = number(fields, Column::t, line);
         // An empty radius field means "no radius" (the writer leaves it empty for such
         // elements when others have one); an explicit value must be a real radius.
         if (has(Column::radius) && !fields[index_.at(Column::radius)].empty()) {
@@ -295,105 +300,105 @@ private:
         if (value == "0" || value == "false" || value.empty()) return false;
         fail_input(source_, line, name + " must be 0, 1, true or false: '" + field + "'");
     }
+};
 
-    // Rows of one element must agree on everything that belongs to the element.
-    void check_same_element(const Row& first, const Row& row) const {
-        const auto differ = [&](const char* what) {
-            fail_input(source_, row.line,
-                       "element '" + row.element + "' has a different " + what + " than on line " +
-                           std::to_string(first.line));
-        };
-        if (row.cls != first.cls) differ("class");
-        if (row.radius != first.radius) differ("radius");
-        if (row.angle != first.angle) differ("angle");
-        if (row.q != first.q) differ("orientation (qw, qx, qy, qz)");
-        if (row.scale != first.scale) differ("scale");
-        if (row.id != first.id) differ("id");
-        if (row.locked != first.locked) differ("locked");
-        if (row.attributes != first.attributes) differ("attribute value");
-    }
+}  // namespace
 
-    // Groups rows into elements: by the element column (first-appearance order, samples
-    // ordered by the sample column or by row order), else one element per row.
-    std::vector<std::vector<const Row*>> group(const std::vector<Row>& rows) const {
-        std::vector<std::vector<const Row*>> groups;
-        if (!has(Column::element)) {
-            for (const Row& row : rows) groups.push_back({&row});
-            return groups;
-        }
-        std::map<std::string, size_t> group_of;
-        for (const Row& row : rows) {
-            const auto [it, added] = group_of.try_emplace(row.element, groups.size());
-            if (added)
-                groups.emplace_back();
-            else
-                check_same_element(*groups[it->second].front(), row);
-            groups[it->second].push_back(&row);
-        }
-        if (has(Column::sample)) {
-            for (auto& g : groups) {
-                std::stable_sort(g.begin(), g.end(),
-                                 [](const Row* a, const Row* b) { return a->sample < b->sample; });
-                for (size_t s = 1; s < g.size(); ++s)
-                    if (g[s]->sample == g[s - 1]->sample)
-                        fail_input(source_, std::max(g[s]->line, g[s - 1]->line),
-                                   "element '" + g[s]->element + "' has sample " +
-                                       std::to_string(g[s]->sample) + " twice (also on line " +
-                                       std::to_string(std::min(g[s]->line, g[s - 1]->line)) + ")");
-            }
-        }
+// Rows of one element must agree on everything that belongs to the element.
+void io_detail::check_same_csv_element(const CsvRow& first, const CsvRow& row, const std::string& source) {
+    const auto differ = [&](const char* what) {
+        fail_input(source, row.line,
+                   "element '" + row.element + "' has a different " + what + " than on line " +
+                       std::to_string(first.line));
+    };
+    if (row.cls != first.cls) differ("class");
+    if (row.radius != first.radius) differ("radius");
+    if (row.angle != first.angle) differ("angle");
+    if (row.q != first.q) differ("orientation (qw, qx, qy, qz)");
+    if (row.scale != first.scale) differ("scale");
+    if (row.id != first.id) differ("id");
+    if (row.locked != first.locked) differ("locked");
+    if (row.attributes != first.attributes) differ("attribute value");
+}
+
+std::vector<CsvGroup> io_detail::group_csv_rows(const CsvTable& table, const std::vector<const CsvRow*>& rows,
+                                                const std::string& source) {
+    std::vector<CsvGroup> groups;
+    if (!table.element) {
+        for (const CsvRow* row : rows) groups.push_back({row});
         return groups;
     }
-
-    Exemplar build(const std::vector<Row>& rows) const {
-        Exemplar ex;
-        ex.dimension = dimension_;
-        ex.attribute_names = attribute_names_;
-        std::set<std::uint64_t> ids;
-        for (const auto& g : group(rows)) {
-            const Row& first = *g.front();
-            std::vector<Vec3> points;
-            for (const Row* row : g) points.push_back(row->p);
-            const int index = ex.add_element(ex.type_index(first.cls), points, first.radius);
-            Element& e = ex.elements[index];
-            if (const auto problem = resolve_orientation(first.q, first.angle, dimension_, e.orientation))
-                fail_input(source_, first.line, *problem);
-            e.scale = first.scale;
-            if (first.id) e.id = *first.id;
-            if (!ids.insert(e.id).second)
-                fail_input(source_, first.line, "duplicate element id " + std::to_string(e.id));
-            e.locked = first.locked;
-            e.attributes = first.attributes;
-            for (size_t s = 0; s < g.size(); ++s) ex.samples[e.first_sample + s].time = g[s]->time;
-        }
-        ex.domain = domain(ex);
-        ex.validate(source_);
-        return ex;
+    std::map<std::string, size_t> group_of;
+    for (const CsvRow* row : rows) {
+        const auto [it, added] = group_of.try_emplace(row->element, groups.size());
+        if (added)
+            groups.emplace_back();
+        else
+            check_same_csv_element(*groups[it->second].front(), *row, source);
+        groups[it->second].push_back(row);
     }
-
-    Domain domain(const Exemplar& ex) const {
-        if (options_.input_domain) {
-            if (options_.input_domain->dimension() != dimension_)
-                throw Error(ErrorKind::domain, source_ + ": the input domain is " +
-                                                   std::to_string(options_.input_domain->dimension()) +
-                                                   "D but the data are " + std::to_string(dimension_) + "D");
-            return *options_.input_domain;
-        }
-        Vec3 lo = ex.samples.front().p, hi = lo;
-        for (const auto& s : ex.samples)
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = std::min(lo[k], s.p[k]);
-                hi[k] = std::max(hi[k], s.p[k]);
-            }
-        try {
-            return Domain::box(lo, hi, dimension_);
-        } catch (const Error& e) {
-            throw Error(ErrorKind::domain, source_ +
-                                               ": the bounding box of the points cannot be the domain (" +
-                                               e.what() + "); give the input domain explicitly");
+    if (table.sample) {
+        for (auto& g : groups) {
+            std::stable_sort(g.begin(), g.end(), [](const CsvRow* a, const CsvRow* b) { return a->sample < b->sample; });
+            for (size_t s = 1; s < g.size(); ++s)
+                if (g[s]->sample == g[s - 1]->sample)
+                    fail_input(source, std::max(g[s]->line, g[s - 1]->line),
+                               "element '" + g[s]->element + "' has sample " + std::to_string(g[s]->sample) +
+                                   " twice (also on line " + std::to_string(std::min(g[s]->line, g[s - 1]->line)) +
+                                   ")");
         }
     }
-};
+    return groups;
+}
+
+Exemplar io_detail::csv_elements(const CsvTable& table, const std::vector<CsvGroup>& groups,
+                                 const std::string& source) {
+    Exemplar ex;
+    ex.dimension = table.dimension;
+    ex.attribute_names = table.attribute_names;
+    std::set<std::uint64_t> ids;
+    for (const auto& g : groups) {
+        const CsvRow& first = *g.front();
+        std::vector<Vec3> points;
+        for (const CsvRow* row : g) points.push_back(row->p);
+        const int index = ex.add_element(ex.type_index(first.cls), points, first.radius);
+        Element& e = ex.elements[index];
+        if (const auto problem = resolve_orientation(first.q, first.angle, table.dimension, e.orientation))
+            fail_input(source, first.line, *problem);
+        e.scale = first.scale;
+        if (first.id) e.id = *first.id;
+        if (!ids.insert(e.id).second) fail_input(source, first.line, "duplicate element id " + std::to_string(e.id));
+        e.locked = first.locked;
+        e.attributes = first.attributes;
+        for (size_t s = 0; s < g.size(); ++s) ex.samples[e.first_sample + s].time = g[s]->time;
+    }
+    return ex;
+}
+
+Domain io_detail::csv_domain(const std::vector<Vec3>& points, int dimension, const LoadOptions& options,
+                             const std::string& source) {
+    if (options.input_domain) {
+        if (options.input_domain->dimension() != dimension)
+            throw Error(ErrorKind::domain, source + ": the input domain is " +
+                                               std::to_string(options.input_domain->dimension()) +
+                                               "D but the data are " + std::to_string(dimension) + "D");
+        return *options.input_domain;
+    }
+    Vec3 lo = points.front(), hi = lo;
+    for (const Vec3& p : points)
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    try {
+        return Domain::box(lo, hi, dimension);
+    } catch (const Error& e) {
+        throw Error(ErrorKind::domain, source + ": the bounding box of the points cannot be the domain (" + e.what() +
+                                           "); give the input domain explicitly");
+    }
+}
+
+namespace {
 
 // ---- writing ---------------------------------------------------------------
 
@@ -423,58 +428,97 @@ void check_attribute_names(const Exemplar& data) {
     }
 }
 
+// The columns the writer writes for some data.
+struct CsvLayout {
+    bool three_d = false;
+    bool frame = false;    // frame,time columns in front (an animation's frame)
+    bool element = false;  // element,sample columns
+    bool radius = false, locked = false, time = false;
+
+    CsvLayout(const Exemplar& data, bool frame_columns) : three_d(data.dimension == 3), frame(frame_columns) {
+        element = frame || data.has_multi_sample_elements();
+        for (const auto& e : data.elements) {
+            radius = radius || e.radius > 0.0;
+            locked = locked || e.locked;
+        }
+        // In an animation, time is the frame's, in the frame's time column.
+        for (const auto& s : data.samples) time = time || (!frame && s.time != 0.0);
+    }
+};
+
 }  // namespace
 
 Exemplar parse_csv(const std::string& text, const std::string& source, const LoadOptions& options) {
-    return CsvReader(source, options).read(text);
+    CsvTable table = read_csv_table(text, source);
+    if (table.frame || table.t) return read_csv_animation(std::move(table), source, options).frame(0);
+    return read_csv_exemplar(table, source, options);
+}
+
+CsvTable io_detail::read_csv_table(std::string_view text, const std::string& source) {
+    return CsvReader(source).read(text);
+}
+
+Exemplar io_detail::read_csv_exemplar(const CsvTable& table, const std::string& source, const LoadOptions& options) {
+    std::vector<const CsvRow*> rows;
+    for (const CsvRow& row : table.rows) rows.push_back(&row);
+    Exemplar ex = csv_elements(table, group_csv_rows(table, rows, source), source);
+    std::vector<Vec3> points;
+    for (const Sample& s : ex.samples) points.push_back(s.p);
+    ex.domain = csv_domain(points, table.dimension, options, source);
+    ex.validate(source);
+    return ex;
 }
 
 std::string to_csv(const Exemplar& data) {
-    check_attribute_names(data);
-    const bool three_d = data.dimension == 3;
-    const bool multi = data.has_multi_sample_elements();
-    bool any_radius = false, any_locked = false, any_time = false;
-    for (const auto& e : data.elements) {
-        any_radius = any_radius || e.radius > 0.0;
-        any_locked = any_locked || e.locked;
-    }
-    for (const auto& s : data.samples) any_time = any_time || s.time != 0.0;
+    std::string out = csv_header_line(data, false);
+    append_csv_rows(data, false, "", out);
+    return out;
+}
 
+std::string io_detail::csv_header_line(const Exemplar& data, bool frame_columns) {
+    check_attribute_names(data);
+    const CsvLayout layout(data, frame_columns);
     std::string out;
-    if (multi) out += "element,sample,";
-    out += three_d ? "x,y,z,class" : "x,y,class";
-    if (any_radius) out += ",radius";
-    out += three_d ? ",qw,qx,qy,qz" : ",angle";
+    if (layout.frame) out += "frame,time,";
+    if (layout.element) out += "element,sample,";
+    out += layout.three_d ? "x,y,z,class" : "x,y,class";
+    if (layout.radius) out += ",radius";
+    out += layout.three_d ? ",qw,qx,qy,qz" : ",angle";
     out += ",scale,id";
-    if (any_time) out += ",time";
-    if (any_locked) out += ",locked";
+    if (layout.time) out += ",time";
+    if (layout.locked) out += ",locked";
     for (const auto& name : data.attribute_names) out += "," + text_field(name, "attribute name");
     out += "\n";
+    return out;
+}
 
+void io_detail::append_csv_rows(const Exemplar& data, bool frame_columns, const std::string& row_lead,
+                                std::string& out) {
+    const CsvLayout layout(data, frame_columns);
     const auto num = [](double v) { return format_number(v); };
     for (const auto& e : data.elements) {
         // The element's columns are the same on each of its rows.
         std::string pose = "," + text_field(data.types.at(static_cast<size_t>(e.type)).name, "class name");
-        if (any_radius) pose += "," + (e.radius > 0.0 ? num(e.radius) : std::string());
+        if (layout.radius) pose += "," + (e.radius > 0.0 ? num(e.radius) : std::string());
         const Quat& q = e.orientation;
-        pose += three_d ? "," + num(q.w) + "," + num(q.x) + "," + num(q.y) + "," + num(q.z)
-                        : "," + num(q.angle_z());
+        pose += layout.three_d ? "," + num(q.w) + "," + num(q.x) + "," + num(q.y) + "," + num(q.z)
+                               : "," + num(q.angle_z());
         pose += "," + num(e.scale) + "," + std::to_string(e.id);
         std::string tail;
-        if (any_locked) tail += e.locked ? ",1" : ",0";
+        if (layout.locked) tail += e.locked ? ",1" : ",0";
         for (double a : e.attributes) tail += "," + num(a);
         for (int s = 0; s < e.sample_count; ++s) {
             const Sample& sample = data.samples[e.first_sample + s];
-            if (multi) out += std::to_string(e.id) + "," + std::to_string(s) + ",";
+            out += row_lead;
+            if (layout.element) out += std::to_string(e.id) + "," + std::to_string(s) + ",";
             out += num(sample.p.x) + "," + num(sample.p.y);
-            if (three_d) out += "," + num(sample.p.z);
+            if (layout.three_d) out += "," + num(sample.p.z);
             out += pose;
-            if (any_time) out += "," + num(sample.time);
+            if (layout.time) out += "," + num(sample.time);
             out += tail;
             out += "\n";
         }
     }
-    return out;
 }
 
 }  // namespace tessera

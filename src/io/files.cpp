@@ -81,19 +81,11 @@ std::string read_file(const std::string& path) {
 }
 
 Exemplar load(const std::string& path, const LoadOptions& options) {
-    const std::string extension = extension_of(path);
-    if (extension != ".json" && extension != ".csv")
-        throw Error(ErrorKind::io, "cannot load " + path + ": unsupported extension '" + extension +
-                                       "' (supported: .json, .csv)");
+    const std::string extension = load_extension(path);
     const std::string text = read_file(path);
     if (extension == ".csv") return parse_csv(text, path, options);
     Exemplar data = parse_json(text, path);
-    // Type meshes are named relative to the file; the loaded data name them so that
-    // they open from the working directory.
-    const std::filesystem::path directory = std::filesystem::path(path).parent_path();
-    for (ElementType& type : data.types)
-        if (!type.mesh.empty() && std::filesystem::path(type.mesh).is_relative())
-            type.mesh = (directory / type.mesh).lexically_normal().string();
+    resolve_mesh_paths(data, path);
     return data;
 }
 

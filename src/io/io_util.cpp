@@ -81,6 +81,37 @@ std::optional<std::string> resolve_orientation(std::optional<Quat> q, std::optio
     return std::nullopt;
 }
 
+std::string load_extension(const std::string& path) {
+    const std::string extension = extension_of(path);
+    if (extension != ".json" && extension != ".csv")
+        throw Error(ErrorKind::io, "cannot load " + path + ": unsupported extension '" + extension +
+                                       "' (supported: .json, .csv)");
+    return extension;
+}
+
+void resolve_mesh_paths(Exemplar& data, const std::string& path) {
+    const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+    for (ElementType& type : data.types)
+        if (!type.mesh.empty() && std::filesystem::path(type.mesh).is_relative())
+            type.mesh = (directory / type.mesh).lexically_normal().string();
+}
+
+// Relative to the file's directory, so that the file and its meshes can move together;
+// absolute when the two share no directory but the root (a relative path would then
+// climb to the root anyway).
+std::string mesh_path_from(const std::string& json_path, const std::string& mesh) {
+    namespace fs = std::filesystem;
+    const fs::path directory = fs::absolute(fs::path(json_path)).parent_path().lexically_normal();
+    const fs::path file = fs::absolute(mesh).lexically_normal();
+    const auto top = [](const fs::path& p) {
+        auto it = p.begin();
+        return it == p.end() || ++it == p.end() ? fs::path() : *it;
+    };
+    const fs::path relative = file.lexically_relative(directory);
+    if (relative.empty() || top(file) != top(directory)) return file.string();
+    return relative.string();
+}
+
 std::string located(const std::string& source, int line, const std::string& what) {
     if (line > 0) return source + ":" + std::to_string(line) + ": " + what;
     return source + ": " + what;

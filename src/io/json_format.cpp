@@ -8,17 +8,23 @@
 // silently ignored typo ("raduis") would quietly change a synthesis result.
 // The writer puts one element per line: readable, diffable, and still a plain
 // JSON document; doubles are written in the shortest form that reads back exactly.
+// Animated documents (a top-level "frames" array) are read and written by
+// animation_json.cpp through the pieces exposed in io_util.hpp; parse_json gives their
+// frame 0, so that every command reading an exemplar accepts them.
 #include <algorithm>
 #include <filesystem>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/io_util.hpp"
+#include "tessera/animation.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
 #include "tessera/render.hpp"
@@ -34,9 +40,14 @@ using OrderedJson = nlohmann::ordered_json;
 
 constexpr int format_version = 1;
 
+// Element type topologies by name, as "topology" holds them (automatic is the default
+// and is never written).
+constexpr std::pair<ElementTopology, const char*> topology_names[] = {
+    {ElementTopology::none, "none"}, {ElementTopology::thread, "thread"}, {ElementTopology::sheet, "sheet"}};
+
 class JsonReader {
 public:
-    explicit JsonReader(const std::string& source) : source_(source) {}
+    explicit JsonReader(const std::string& source, int dimension = 2) : source_(source), dimension_(dimension) {}
 
     Domain read_domain_document(const std::string& text, int dimension) {
         dimension_ = dimension;
@@ -46,12 +57,13 @@ public:
         return read_domain(doc);
     }
 
-    Exemplar read(const std::string& text) {
-        const Json doc = parse(text);
+    // A static document, or with `frame_samples` an animated one (io_util.hpp).
+    Exemplar read(const Json& doc, const JsonFrameSamples* frame_samples = nullptr) {
+        frame_samples_ = frame_samples;
         if (!doc.is_object()) fail("", "the document must be a JSON object");
         check_keys(doc,
                    {"format", "version", "dimension", "domain", "types", "attributes", "elements", "stats", "description"},
-                   "");
+                   "", frame_samples ? "frames" : nullptr);
         read_header(doc);
         Exemplar ex;
         ex.dimension = dimension_;
@@ -61,16 +73,74 @@ public:
         read_elements(require(doc, "elements", ""), ex);
         ex.update_positions();
         ex.validate(source_);
+        check_topology(ex, source_);
         return ex;
     }
 
-private:
-    std::string source_;
-    int dimension_ = 2;
-    bool types_declared_ = false;
+    // The checks below are shared with the animation reader (io_util.hpp).
 
-    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        fail_input(source_, 0, where.empty() ? what : where + ": " + what);
+    // The header of a document (a JSON object); returns the dimension.
+    int read_header(const Json& doc) {
+        const Json& format = require(doc, "format", "");
+        if (!format.is_string() || format.get<std::string>() != "tessera")
+            fail("", "not a tessera file (\"format\" must be \"tessera\", got " + format.dump() + ")");
+        const Json& version = require(doc, "version", "");
+        if (!version.is_number_integer() || version.get<long long>() != format_version)
+            fail("", "unsupported version " + version.dump() + " (this build reads version " +
+                         std::to_string(format_version) + ")");
+        const long long dimension = integer(require(doc, "dimension", ""), "dimension");
+        if (dimension != 2 && dimension != 3)
+            fail("dimension", "must be 2 or 3, got " + std::to_string(dimension));
+        dimension_ = static_cast<int>(dimension);
+        return dimension_;
+    }
+
+    // Only the keys `allowed` (and `also_allowed`, when given).
+    void check_keys(const Json& object, std::initializer_list<const char*> allowed, const std::string& where,
+                    const char* also_allowed = nullptr) const {
+        for (const auto& item : object.items()) {
+            const bool known = std::any_of(allowed.begin(), allowed.end(),
+                                           [&](const char* key) { return item.key() == key; });
+            if (!known && !(also_allowed && item.key() == also_allowed))
+                fail(where, "unknown key '" + item.key() + "'");
+        }
+    }
+
+    double number(const Json& value, const std::string& where) const {
+        if (!value.is_number()) fail(where, "must be a number, got " + value.dump());
+        const double x = value.get<double>();
+        if (!std::isfinite(x)) fail(where, "is NaN or infinite");
+        return x;
+    }
+
+    std::uint64_t element_id(const Json& id, const std::string& where) const {
+        if (!id.is_number_unsigned()) fail(where, "must be a non-negative integer, got " + id.dump());
+        return id.get<std::uint64_t>();
+    }
+
+    std::vector<Vec3> element_samples(const Json& e, const std::string& where) const {
+        const bool has_position = e.contains("position");
+        const bool has_samples = e.contains("samples");
+        if (has_position == has_samples)
+            fail(where, "needs exactly one of \"position\" (one sample) and \"samples\" (several)");
+        if (has_position) return {point(e["position"], member(where, "position"))};
+        const Json& samples = array(e["samples"], member(where, "samples"));
+        if (samples.empty()) fail(member(where, "samples"), "must not be empty");
+        std::vector<Vec3> points;
+        for (size_t s = 0; s < samples.size(); ++s)
+            points.push_back(point(samples[s], member(where, "samples[" + std::to_string(s) + "]")));
+        return points;
+    }
+
+    const Json& require(const Json& object, const char* key, const std::string& where) const {
+        const auto it = object.find(key);
+        if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
+        return *it;
+    }
+
+    const Json& array(const Json& value, const std::string& where) const {
+        if (!value.is_array()) fail(where, "must be an array, got " + value.dump());
+        return value;
     }
 
     Json parse(const std::string& text) const {
@@ -87,30 +157,18 @@ private:
         }
     }
 
+private:
+    std::string source_;
+    int dimension_ = 2;
+    bool types_declared_ = false;
+    const JsonFrameSamples* frame_samples_ = nullptr;
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        fail_input(source_, 0, where.empty() ? what : where + ": " + what);
+    }
+
     static std::string member(const std::string& where, const std::string& key) {
         return where.empty() ? key : where + "." + key;
-    }
-
-    void check_keys(const Json& object, std::initializer_list<const char*> allowed,
-                    const std::string& where) const {
-        for (const auto& item : object.items()) {
-            const bool known = std::any_of(allowed.begin(), allowed.end(),
-                                           [&](const char* key) { return item.key() == key; });
-            if (!known) fail(where, "unknown key '" + item.key() + "'");
-        }
-    }
-
-    const Json& require(const Json& object, const char* key, const std::string& where) const {
-        const auto it = object.find(key);
-        if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
-        return *it;
-    }
-
-    double number(const Json& value, const std::string& where) const {
-        if (!value.is_number()) fail(where, "must be a number, got " + value.dump());
-        const double x = value.get<double>();
-        if (!std::isfinite(x)) fail(where, "is NaN or infinite");
-        return x;
     }
 
     std::string string(const Json& value, const std::string& where) const {
@@ -128,11 +186,6 @@ private:
         return value.get<long long>();
     }
 
-    const Json& array(const Json& value, const std::string& where) const {
-        if (!value.is_array()) fail(where, "must be an array, got " + value.dump());
-        return value;
-    }
-
     // A point of `dimension_` coordinates.
     Vec3 point(const Json& value, const std::string& where) const {
         if (!value.is_array() || value.size() != static_cast<size_t>(dimension_))
@@ -146,20 +199,6 @@ private:
             if (!std::isfinite(p[k])) fail(where, "coordinate is NaN or infinite");
         }
         return p;
-    }
-
-    void read_header(const Json& doc) {
-        const Json& format = require(doc, "format", "");
-        if (!format.is_string() || format.get<std::string>() != "tessera")
-            fail("", "not a tessera file (\"format\" must be \"tessera\", got " + format.dump() + ")");
-        const Json& version = require(doc, "version", "");
-        if (!version.is_number_integer() || version.get<long long>() != format_version)
-            fail("", "unsupported version " + version.dump() + " (this build reads version " +
-                         std::to_string(format_version) + ")");
-        const long long dimension = integer(require(doc, "dimension", ""), "dimension");
-        if (dimension != 2 && dimension != 3)
-            fail("dimension", "must be 2 or 3, got " + std::to_string(dimension));
-        dimension_ = static_cast<int>(dimension);
     }
 
     Domain read_domain(const Json& value) const {
@@ -246,7 +285,9 @@ private:
             const std::string where = "types[" + std::to_string(i) + "]";
             const Json& t = types[i];
             if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
-            check_keys(t, {"name", "rigid", "floor", "mesh", "color", "reference", "depends_on", "weights", "graph"},
+            check_keys(t,
+                       {"name", "rigid", "floor", "mesh", "color", "reference", "depends_on", "weights", "graph",
+                        "topology", "columns"},
                        where);
             ElementType type;
             type.name = string(require(t, "name", where), member(where, "name"));
@@ -273,6 +314,8 @@ private:
             if (t.contains("depends_on")) type.depends_on = depends_on(t["depends_on"], member(where, "depends_on"));
             if (t.contains("weights")) type.weights = weights(t["weights"], member(where, "weights"));
             if (t.contains("graph")) type.graph = graph(t["graph"], member(where, "graph"));
+            if (t.contains("topology")) type.topology = topology(t["topology"], member(where, "topology"));
+            if (t.contains("columns")) type.sheet_columns = columns(t["columns"], member(where, "columns"));
             ex.types.push_back(std::move(type));
         }
         // Names may refer to types listed later, so they are checked once all are read.
@@ -285,6 +328,22 @@ private:
                          "type '" + ex.types[i].name + "' depends on unknown type '" + name + "'");
             }
         }
+    }
+
+    // How the type's samples hang together in space-time synthesis (animation.hpp).
+    ElementTopology topology(const Json& value, const std::string& where) const {
+        const std::string name = string(value, where);
+        for (const auto& [t, known] : topology_names)
+            if (name == known) return t;
+        fail(where, "unknown topology '" + name + "' (known: none, thread, sheet)");
+    }
+
+    // A sheet's grid columns; whether they fit the topology and the sample count is
+    // check_topology's job, once the elements are read.
+    int columns(const Json& value, const std::string& where) const {
+        const long long n = integer(value, where);
+        if (n < 1 || n > std::numeric_limits<int>::max()) fail(where, "must be a positive integer, got " + value.dump());
+        return static_cast<int>(n);
     }
 
     // Brushing's sample weights (brush.hpp): numbers > 0, one per sample id (the count is
@@ -360,20 +419,6 @@ private:
         return type;
     }
 
-    std::vector<Vec3> element_samples(const Json& e, const std::string& where) const {
-        const bool has_position = e.contains("position");
-        const bool has_samples = e.contains("samples");
-        if (has_position == has_samples)
-            fail(where, "needs exactly one of \"position\" (one sample) and \"samples\" (several)");
-        if (has_position) return {point(e["position"], member(where, "position"))};
-        const Json& samples = array(e["samples"], member(where, "samples"));
-        if (samples.empty()) fail(member(where, "samples"), "must not be empty");
-        std::vector<Vec3> points;
-        for (size_t s = 0; s < samples.size(); ++s)
-            points.push_back(point(samples[s], member(where, "samples[" + std::to_string(s) + "]")));
-        return points;
-    }
-
     Quat element_orientation(const Json& e, const std::string& where) const {
         std::optional<double> angle;
         if (e.contains("angle")) angle = number(e["angle"], member(where, "angle"));
@@ -424,14 +469,12 @@ private:
                 radius = number(e["radius"], member(where, "radius"));
                 if (radius < 0.0) fail(member(where, "radius"), "must be >= 0 (0 means no radius)");
             }
-            const int index = ex.add_element(type, element_samples(e, where), radius);
+            std::optional<std::uint64_t> id;
+            if (e.contains("id")) id = element_id(e["id"], member(where, "id"));
+            const int index = ex.add_element(
+                type, frame_samples_ ? samples_from_frames(e, id, where) : element_samples(e, where), radius);
             Element& element = ex.elements[index];
-            if (e.contains("id")) {
-                const Json& id = e["id"];
-                if (!id.is_number_unsigned())
-                    fail(member(where, "id"), "must be a non-negative integer, got " + id.dump());
-                element.id = id.get<std::uint64_t>();
-            }
+            if (id) element.id = *id;
             if (!ids.insert(element.id).second)
                 fail(where, "duplicate element id " + std::to_string(element.id));
             element.orientation = element_orientation(e, where);
@@ -443,6 +486,16 @@ private:
             read_element_attributes(e, where, ex, element);
             element_time(e, where, index, ex);
         }
+    }
+
+    // An animated file's element: its samples are in the frames, which name it by its id.
+    std::vector<Vec3> samples_from_frames(const Json& e, std::optional<std::uint64_t> id,
+                                          const std::string& where) const {
+        for (const char* key : {"position", "samples", "time"})
+            if (e.contains(key))
+                fail(member(where, key), "not allowed in an animated file (positions and times are in \"frames\")");
+        if (!id) fail(where, "missing \"id\" (required in an animated file: frames name elements by id)");
+        return (*frame_samples_)(*id, where);
     }
 
     void read_element_attributes(const Json& e, const std::string& where, const Exemplar& ex,
@@ -472,25 +525,21 @@ OrderedJson point_json(const Vec3& p, int dimension) {
     return out;
 }
 
-OrderedJson element_json(const Exemplar& data, const Element& e) {
-    OrderedJson out;
-    out["id"] = e.id;
-    out["type"] = data.types.at(static_cast<size_t>(e.type)).name;
+// "position" for a single-sample element, else "samples".
+void put_samples(OrderedJson& out, const Exemplar& data, const Element& e) {
     if (e.sample_count == 1) {
         out["position"] = point_json(data.samples[e.first_sample].p, data.dimension);
-    } else {
-        OrderedJson samples = OrderedJson::array();
-        for (int s = 0; s < e.sample_count; ++s)
-            samples.push_back(point_json(data.samples[e.first_sample + s].p, data.dimension));
-        out["samples"] = std::move(samples);
+        return;
     }
-    if (e.radius > 0.0) out["radius"] = e.radius;
-    if (data.dimension == 2) out["angle"] = e.orientation.angle_z();
-    out["orientation"] = {e.orientation.w, e.orientation.x, e.orientation.y, e.orientation.z};
-    out["scale"] = e.scale;
-    if (!e.attributes.empty()) out["attributes"] = e.attributes;
-    if (e.locked) out["locked"] = true;
-    // Time: one number when all samples share it (the usual case), else one per sample.
+    OrderedJson samples = OrderedJson::array();
+    for (int s = 0; s < e.sample_count; ++s)
+        samples.push_back(point_json(data.samples[e.first_sample + s].p, data.dimension));
+    out["samples"] = std::move(samples);
+}
+
+// Time: one number when all samples share it (the usual case), else one per sample;
+// nothing when all are 0.
+void put_time(OrderedJson& out, const Exemplar& data, const Element& e) {
     bool uniform = true, all_zero = true;
     for (int s = 0; s < e.sample_count; ++s) {
         const double t = data.samples[e.first_sample + s].time;
@@ -506,6 +555,21 @@ OrderedJson element_json(const Exemplar& data, const Element& e) {
             out["time"] = std::move(times);
         }
     }
+}
+
+OrderedJson element_json(const Exemplar& data, const Element& e, JsonElementPart part) {
+    OrderedJson out;
+    out["id"] = e.id;
+    if (part != JsonElementPart::samples) out["type"] = data.types.at(static_cast<size_t>(e.type)).name;
+    if (part != JsonElementPart::definition) put_samples(out, data, e);
+    if (part == JsonElementPart::samples) return out;
+    if (e.radius > 0.0) out["radius"] = e.radius;
+    if (data.dimension == 2) out["angle"] = e.orientation.angle_z();
+    out["orientation"] = {e.orientation.w, e.orientation.x, e.orientation.y, e.orientation.z};
+    out["scale"] = e.scale;
+    if (!e.attributes.empty()) out["attributes"] = e.attributes;
+    if (e.locked) out["locked"] = true;
+    if (part == JsonElementPart::all) put_time(out, data, e);
     return out;
 }
 
@@ -530,18 +594,45 @@ OrderedJson stats_json(const RunStats& stats) {
     return out;
 }
 
-// Writes `items` as a JSON array with one compact item per line.
-void append_array(std::string& out, const std::vector<OrderedJson>& items) {
+// Writes `items` (compact JSON texts) as a JSON array with one item per line.
+void append_array(std::string& out, const std::vector<std::string>& items) {
     if (items.empty()) {
         out += "[]";
         return;
     }
     out += "[\n";
     for (size_t i = 0; i < items.size(); ++i) {
-        out += "    " + items[i].dump();
+        out += "    " + items[i];
         out += i + 1 < items.size() ? ",\n" : "\n";
     }
     out += "  ]";
+}
+
+// The "types" entries, one compact JSON text each.
+std::vector<std::string> types_json(const Exemplar& data, const MeshPath& mesh_path) {
+    std::vector<std::string> types;
+    for (const auto& t : data.types) {
+        OrderedJson type{{"name", t.name}, {"rigid", t.rigid}, {"floor", t.floor},
+                         {"mesh", t.mesh.empty() ? t.mesh : mesh_path(t.mesh)}};
+        if (!t.color.empty()) type["color"] = t.color;
+        if (!t.reference.empty()) {
+            OrderedJson reference = OrderedJson::array();
+            for (const Vec3& p : t.reference) reference.push_back(point_json(p, data.dimension));
+            type["reference"] = std::move(reference);
+        }
+        if (t.depends_on) type["depends_on"] = *t.depends_on;
+        if (!t.weights.empty()) type["weights"] = t.weights;
+        if (!t.graph.empty()) {
+            OrderedJson graph = OrderedJson::array();
+            for (const auto& edge : t.graph) graph.push_back({edge[0], edge[1]});
+            type["graph"] = std::move(graph);
+        }
+        for (const auto& [topology, name] : topology_names)
+            if (t.topology == topology) type["topology"] = name;
+        if (t.sheet_columns != 0) type["columns"] = t.sheet_columns;
+        types.push_back(type.dump());
+    }
+    return types;
 }
 
 // The "domain" object (docs/format.md). Files are written as absolute paths: the
@@ -592,7 +683,9 @@ OrderedJson domain_json(const Domain& d, int dimension) {
 }  // namespace
 
 Exemplar parse_json(const std::string& text, const std::string& source) {
-    return JsonReader(source).read(text);
+    const Json doc = parse_json_text(text, source);
+    if (doc.is_object() && doc.contains("frames")) return read_json_animation(doc, source).frame(0);
+    return read_json_document(doc, source);
 }
 
 Domain load_domain_json(const std::string& path, int dimension) {
@@ -605,45 +698,78 @@ std::string to_json(const Exemplar& data, const RunStats* stats) {
     return to_json_with_mesh_paths(data, stats, [](const std::string& mesh) { return mesh; });
 }
 
+// ---- pieces shared with animation_json.cpp (io_util.hpp) -------------------
+
+Json io_detail::parse_json_text(const std::string& text, const std::string& source) {
+    return JsonReader(source).parse(text);
+}
+
+int io_detail::json_document_dimension(const Json& doc, const std::string& source) {
+    return JsonReader(source).read_header(doc);
+}
+
+Exemplar io_detail::read_json_document(const Json& doc, const std::string& source,
+                                       const JsonFrameSamples* frame_samples) {
+    return JsonReader(source).read(doc, frame_samples);
+}
+
+void io_detail::check_json_keys(const Json& object, std::initializer_list<const char*> allowed,
+                                const std::string& source, const std::string& where) {
+    JsonReader(source).check_keys(object, allowed, where);
+}
+
+const Json& io_detail::json_require(const Json& object, const char* key, const std::string& source,
+                                   const std::string& where) {
+    return JsonReader(source).require(object, key, where);
+}
+
+const Json& io_detail::json_array(const Json& value, const std::string& source, const std::string& where) {
+    return JsonReader(source).array(value, where);
+}
+
+double io_detail::json_number(const Json& value, const std::string& source, const std::string& where) {
+    return JsonReader(source).number(value, where);
+}
+
+std::uint64_t io_detail::json_element_id(const Json& value, const std::string& source, const std::string& where) {
+    return JsonReader(source).element_id(value, where);
+}
+
+std::vector<Vec3> io_detail::json_element_samples(const Json& element, int dimension, const std::string& source,
+                                                  const std::string& where) {
+    return JsonReader(source, dimension).element_samples(element, where);
+}
+
+std::string io_detail::json_element_line(const Exemplar& data, const Element& e, JsonElementPart part) {
+    return element_json(data, e, part).dump();
+}
+
+std::string io_detail::json_number_text(double value) { return OrderedJson(value).dump(); }
+
 std::string io_detail::to_json_with_mesh_paths(const Exemplar& data, const RunStats* stats,
-                                               const std::function<std::string(const std::string&)>& mesh_path) {
-    const OrderedJson domain = domain_json(data.domain, data.dimension);
-
-    std::vector<OrderedJson> types;
-    for (const auto& t : data.types) {
-        OrderedJson type{{"name", t.name}, {"rigid", t.rigid}, {"floor", t.floor},
-                         {"mesh", t.mesh.empty() ? t.mesh : mesh_path(t.mesh)}};
-        if (!t.color.empty()) type["color"] = t.color;
-        if (!t.reference.empty()) {
-            OrderedJson reference = OrderedJson::array();
-            for (const Vec3& p : t.reference) reference.push_back(point_json(p, data.dimension));
-            type["reference"] = std::move(reference);
-        }
-        if (t.depends_on) type["depends_on"] = *t.depends_on;
-        if (!t.weights.empty()) type["weights"] = t.weights;
-        if (!t.graph.empty()) {
-            OrderedJson graph = OrderedJson::array();
-            for (const auto& edge : t.graph) graph.push_back({edge[0], edge[1]});
-            type["graph"] = std::move(graph);
-        }
-        types.push_back(std::move(type));
-    }
-    std::vector<OrderedJson> elements;
+                                               const MeshPath& mesh_path) {
+    std::vector<std::string> elements;
     elements.reserve(data.elements.size());
-    for (const auto& e : data.elements) elements.push_back(element_json(data, e));
+    for (const auto& e : data.elements) elements.push_back(element_json(data, e, JsonElementPart::all).dump());
+    return json_document(data, elements, "", stats, mesh_path);
+}
 
+std::string io_detail::json_document(const Exemplar& data, const std::vector<std::string>& element_lines,
+                                     const std::string& after_elements, const RunStats* stats,
+                                     const MeshPath& mesh_path) {
     std::string out = "{\n";
     out += "  \"format\": \"tessera\",\n";
     out += "  \"version\": " + std::to_string(format_version) + ",\n";
     out += "  \"dimension\": " + std::to_string(data.dimension) + ",\n";
-    out += "  \"domain\": " + domain.dump() + ",\n";
+    out += "  \"domain\": " + domain_json(data.domain, data.dimension).dump() + ",\n";
     out += "  \"types\": ";
-    append_array(out, types);
+    append_array(out, types_json(data, mesh_path));
     out += ",\n";
     if (!data.attribute_names.empty())
         out += "  \"attributes\": " + OrderedJson(data.attribute_names).dump() + ",\n";
     out += "  \"elements\": ";
-    append_array(out, elements);
+    append_array(out, element_lines);
+    out += after_elements;
     if (stats) out += ",\n  \"stats\": " + stats_json(*stats).dump();
     out += "\n}\n";
     return out;

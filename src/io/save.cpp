@@ -17,22 +17,6 @@ using namespace io_detail;
 
 namespace {
 
-// A mesh path as the file at `json_path` names it: relative to that file's directory,
-// so that the file and its meshes can move together; absolute when the two share no
-// directory but the root (a relative path would then climb to the root anyway).
-std::string mesh_path_from(const std::string& json_path, const std::string& mesh) {
-    namespace fs = std::filesystem;
-    const fs::path directory = fs::absolute(fs::path(json_path)).parent_path().lexically_normal();
-    const fs::path file = fs::absolute(mesh).lexically_normal();
-    const auto top = [](const fs::path& p) {
-        auto it = p.begin();
-        return it == p.end() || ++it == p.end() ? fs::path() : *it;
-    };
-    const fs::path relative = file.lexically_relative(directory);
-    if (relative.empty() || top(file) != top(directory)) return file.string();
-    return relative.string();
-}
-
 // to_ply does not know the file it is for; its input errors get the file's name here.
 template <class Serialise>
 std::string named(const std::string& path, Serialise serialise) {
