@@ -29,6 +29,8 @@ enum class Purpose : std::uint64_t {
     grow_playout = 9,   // growth: the tree search's random play-outs
     world_seed = 10,    // worlds: where a first-phase tile's seed patches go
     brush_field = 11,   // brushing: the tilt that breaks a symmetric element field's saddle
+    dynamic_candidate = 12,  // dynamic: random input samples tried by the search
+    dynamic_similarity = 13, // dynamic: input samples scanned for the k-coherence sets
     test = 99
 };
 

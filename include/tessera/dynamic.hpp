@@ -1,0 +1,83 @@
+// tessera/dynamic.hpp — dynamic element textures: synthesis in space and time.
+//
+// Implements Ma, Wei, Lefebvre and Tong, "Dynamic Element Textures" (SIGGRAPH 2013),
+// section 3 and 4: spatio-temporal samples u(s) = (p(s), t(s)) (Eq. 1), neighbourhoods of
+// relative differences (Eq. 2-3) matched exactly by the Hungarian algorithm among samples of
+// equal time offset (Eq. 4), temporal-causal neighbourhoods of the compact shape (spatial
+// neighbours plus the sample's own temporal trail) or the full shape, frame-by-frame
+// synthesis (the first frame by the static method's patch initialization and
+// search/assign, each later frame advected by the matched input velocities and then
+// optimised by search and the least-squares assignment of Eq. 6-7, parallelised
+// Jacobi-style), and smooth synthesis (Eq. 8-12: Gaussian falloff, N best matches blended).
+// Output constraints: the domain shape (elements kept inside it) and a global flow.
+//
+// Docs: docs/dynamic.md. Options: tessera/option_table.hpp (dynamic_option_table).
+#pragma once
+
+#include <cstdint>
+
+#include "tessera/animation.hpp"
+#include "tessera/det.hpp"
+#include "tessera/domain.hpp"
+#include "tessera/progress.hpp"
+
+namespace tessera {
+
+// Neighbourhood shape of Figure 3 (right): spatial neighbours at the sample's own frame
+// plus its 1D temporal trail (compact), or every sample within the spatial radius at every
+// frame of the temporal window (full).
+enum class NeighbourhoodShape { compact, full };
+
+struct DynamicOptions {
+    // Output frames; 0 = as many as the exemplar has (at least 2).
+    int frames = 0;
+    // Spatial neighbourhood radius in the exemplar's units; 0 = automatic: 1.5 x the
+    // exemplar's mean nearest-neighbour distance (the 1-ring, as the paper's section 6 and
+    // Table 2 advise).
+    double radius = 0.0;
+    // Frames in a neighbourhood, the sample's own included (Table 2: 1 to 10).
+    int temporal_size = 3;
+    NeighbourhoodShape shape = NeighbourhoodShape::compact;
+    // Smooth synthesis (section 4.2): the spatial falloff sigma_p, in neighbourhood radii,
+    // and the temporal falloff sigma_t, in frames, of the Gaussian kernel of Eq. 10;
+    // 0 = no falloff (the paper's infinity).
+    double sigma_p = 0.0;
+    double sigma_t = 0.0;
+    // N best input matches blended by Eq. 11-12; 1 = the basic algorithm (section 4.1).
+    int matches = 2;
+    // Search + assignment rounds per frame.
+    int iterations = 2;
+    // Search: k-coherence (the matches' own continuations, their neighbours' shifted
+    // matches and random input samples) or an exhaustive scan of every input sample.
+    SearchMode search = SearchMode::kcoherence;
+    // Random input samples tried per output sample and search besides the coherent ones.
+    int random_candidates = 2;
+    // Weight of a type mismatch between paired neighbours, in squared length units;
+    // negative = automatic: (mean nearest-neighbour distance)^2.
+    double alpha = -1.0;
+    // Global flow (units per unit of time) added to every element's motion: the coarse
+    // motion the exemplar's detail motion rides on.
+    Vec3 flow;
+    // An element the motion carries out of the domain re-enters on the opposite side of the
+    // domain's bounding box (periodic: a steady flow keeps the domain filled); off = it is put
+    // back at the nearest point inside.
+    bool wrap = false;
+    // Worker threads; 0 = all hardware threads. Results are byte-identical for every value.
+    int threads = 0;
+    // Seed of every random draw (counter-based, keyed by frame and world position).
+    std::uint64_t seed = 1;
+};
+
+struct AnimatedArrangement : Animation {
+    RunStats stats;
+};
+
+// Synthesizes an animation of `exemplar` over `domain` frame by frame. Throws Error(input)
+// for an invalid exemplar (Animation::validate) or one with multi-sample elements (threads
+// and sheets are not synthesized yet), Error(option) for a bad option (checked against
+// dynamic_option_table), Error(domain) for a domain of another dimension, Cancelled when
+// `progress` returns false (stages "first frame" and "frame").
+AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& domain,
+                                       const DynamicOptions& options = {}, const Progress& progress = {});
+
+}  // namespace tessera

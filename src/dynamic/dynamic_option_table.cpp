@@ -1,0 +1,115 @@
+// The options of dynamic synthesis (DynamicOptions, tessera/dynamic.hpp), one row each:
+// `tessera synth --method dynamic` makes its flags from this table and Python's
+// synthesize(method="dynamic") its keywords (tessera/option_table.hpp).
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/option_rows.hpp"
+#include "dynamic/st_neighbourhood.hpp"
+#include "tessera/dynamic.hpp"
+#include "tessera/error.hpp"
+#include "tessera/option_table.hpp"
+
+namespace tessera {
+
+namespace {
+
+using namespace options;
+using O = DynamicOptions;
+
+// "X,Y" or "X,Y,Z": a vector of 2 or 3 finite numbers.
+Vec3 parse_vector(const std::string& text, const std::string& as_written) {
+    Vec3 v;
+    int count = 0;
+    const char* p = text.c_str();
+    while (*p && count < 3) {
+        char* end = nullptr;
+        v[count++] = std::strtod(p, &end);
+        if (end == p || (*end != ',' && *end != '\0') || !std::isfinite(v[count - 1])) {
+            count = 0;
+            break;
+        }
+        p = *end == ',' ? end + 1 : end;
+    }
+    if (*p != '\0' || count < 2)
+        throw Error(ErrorKind::option, as_written + " must be a vector X,Y or X,Y,Z of finite numbers, got '" + text + "'");
+    return v;
+}
+
+std::string vector_text(const Vec3& v) {
+    if (v == Vec3{}) return "";
+    char text[96];
+    std::snprintf(text, sizeof text, "%.17g,%.17g,%.17g", v[0], v[1], v[2]);
+    return text;
+}
+
+void add_neighbourhood_rows(OptionTable<O>& t) {
+    t.push_back(number_row<O>("radius",
+                              "Spatial neighbourhood radius in the exemplar's units; 0 = automatic (1.5 x the "
+                              "mean nearest-neighbour distance: the 1-ring).",
+                              [](auto& o) -> auto& { return o.radius; }, at_least(0)));
+    t.push_back(integer_row<O>("temporal_size", "Frames in a neighbourhood, the sample's own included (causal).",
+                               [](auto& o) -> auto& { return o.temporal_size; }, between(1, dynamic::max_temporal)));
+    t.push_back(choice_row<O>(
+        "shape",
+        "Neighbourhood shape: compact (spatial neighbours + the sample's temporal trail) or full (every "
+        "sample within the radius in every frame of the window).",
+        [](auto& o) -> auto& { return o.shape; },
+        std::vector<std::pair<std::string, NeighbourhoodShape>>{{"compact", NeighbourhoodShape::compact},
+                                                                {"full", NeighbourhoodShape::full}}));
+    t.push_back(number_row<O>("sigma_p",
+                              "Smooth synthesis: spatial falloff sigma_p of Eq. 10, in neighbourhood radii; 0 = none.",
+                              [](auto& o) -> auto& { return o.sigma_p; }, at_least(0)));
+    t.push_back(number_row<O>("sigma_t", "Smooth synthesis: temporal falloff sigma_t of Eq. 10, in frames; 0 = none.",
+                              [](auto& o) -> auto& { return o.sigma_t; }, at_least(0)));
+    t.push_back(number_row<O>("alpha",
+                              "Weight of a type mismatch between paired neighbours, in squared length units; "
+                              "negative = automatic (mean nearest-neighbour distance squared).",
+                              [](auto& o) -> auto& { return o.alpha; }, any_finite()));
+}
+
+void add_solver_rows(OptionTable<O>& t) {
+    t.push_back(integer_row<O>("frames", "Output frames; 0 = as many as the exemplar has.",
+                               [](auto& o) -> auto& { return o.frames; }, between(0, 1000000)));
+    t.push_back(integer_row<O>("matches",
+                               "N best input matches blended by Eq. 11-12 (smooth synthesis); 1 = the basic algorithm.",
+                               [](auto& o) -> auto& { return o.matches; }, between(1, 8)));
+    t.push_back(integer_row<O>("iterations", "Search + assignment rounds per frame after the advection.",
+                               [](auto& o) -> auto& { return o.iterations; }, between(0, 100)));
+    t.push_back(choice_row<O>("search",
+                              "Candidate search: kcoherence (matches' continuations, shifted neighbour matches, "
+                              "similarity sets) or exhaustive (every exemplar sample-frame).",
+                              [](auto& o) -> auto& { return o.search; },
+                              std::vector<std::pair<std::string, SearchMode>>{{"kcoherence", SearchMode::kcoherence},
+                                                                              {"exhaustive", SearchMode::exhaustive}}));
+    t.push_back(integer_row<O>("random_candidates", "Random exemplar samples tried per output sample and search.",
+                               [](auto& o) -> auto& { return o.random_candidates; }, between(0, 1000)));
+    t.push_back(text_row<O>(
+        "flow", "Global flow X,Y[,Z] in units per unit of time, added to every element's motion; unset = none.",
+        [](const O& o) { return vector_text(o.flow); },
+        [](O& o, const std::string& text, const OptionContext& c) {
+            o.flow = text.empty() ? Vec3{} : parse_vector(text, c.as_written);
+        }));
+    t.push_back(flag_row<O>("wrap",
+                            "An element carried out of the domain re-enters on the opposite side of its bounding "
+                            "box (periodic); off = it is put back at the nearest point inside.",
+                            [](auto& o) -> auto& { return o.wrap; }));
+}
+
+OptionTable<O> make_table() {
+    OptionTable<O> t;
+    t.push_back(seed_row<O>([](auto& o) -> auto& { return o.seed; }));
+    t.push_back(threads_row<O>([](auto& o) -> auto& { return o.threads; }));
+    add_solver_rows(t);
+    add_neighbourhood_rows(t);
+    return t;
+}
+
+}  // namespace
+
+const OptionTable<DynamicOptions>& dynamic_option_table() {
+    static const OptionTable<DynamicOptions> table = make_table();
+    return table;
+}
+
+}  // namespace tessera

@@ -1,0 +1,235 @@
+// dynamic/frame_search.cpp — search (k-coherence or exhaustive, N best) and assignment.
+#include "dynamic/frame_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/parallel.hpp"
+#include "core/rng.hpp"
+
+namespace tessera::dynamic {
+
+namespace {
+
+constexpr int coherent_neighbours = 8;  // nearest neighbours whose matches propose shifted candidates
+
+// A key of the world cell holding p (cells one spacing wide, anchored at the origin), so
+// that random draws depend on where a sample is, not on its index in this run.
+std::uint64_t world_cell_key(const Vec3& p, double spacing) {
+    std::uint64_t key = 0;
+    for (int k = 0; k < 3; ++k) {
+        const auto c = static_cast<std::int64_t>(std::floor(p[k] / spacing));
+        key = core::mix64(key ^ static_cast<std::uint64_t>(c));
+    }
+    return key;
+}
+
+void coherent_candidates(const InputFrames& input, const OutputFrames& output, int s, const StParams& params,
+                         const SearchScratch& scratch, std::vector<int>& out) {
+    const int type = output.type(s);
+    for (int j = 0; j < output.matches(); ++j) {
+        const int m = output.prior_match(s)[j];
+        if (m < 0) continue;
+        out.push_back(m);
+        for (int c : input.similar(m)) out.push_back(c);
+    }
+    // Each near neighbour's best match, shifted by the offset between the two samples.
+    const StNeighbourhood& nb = scratch.neighbourhood;
+    const int end = std::min(nb.start[1], nb.start[0] + coherent_neighbours);
+    for (int e = nb.start[0]; e < end; ++e) {
+        const int o = nb.entries[e].sample;
+        const int m = output.prior_match(o)[0];
+        if (m < 0) continue;
+        const Vec3 target = input.position(m) - nb.entries[e].offset;
+        const int c = input.nearest(input.frame(m), target, type, params.input_radius);
+        if (c >= 0) out.push_back(c);
+    }
+}
+
+void gather_candidates(const InputFrames& input, const OutputFrames& output, int s, const StParams& params,
+                       const SearchSettings& settings, SearchScratch& scratch) {
+    std::vector<int>& out = scratch.candidates;
+    out.clear();
+    const std::vector<int>& pool = input.of_type(output.type(s));
+    if (settings.first_frame_only) {
+        for (int id : pool) {
+            if (input.frame(id) != input.first_frame()) break;  // pools are in id order: frame by frame
+            out.push_back(id);
+        }
+    } else if (settings.mode == SearchMode::exhaustive) {
+        out = pool;
+        return;
+    } else {
+        coherent_candidates(input, output, s, params, scratch, out);
+    }
+    if (!pool.empty() && settings.random_candidates > 0) {
+        const core::KeyedRng rng(settings.seed, core::Purpose::dynamic_candidate,
+                                 static_cast<std::uint64_t>(output.frame()) * 64 + settings.round,
+                                 world_cell_key(output.current()[s], params.spacing));
+        for (int r = 0; r < settings.random_candidates; ++r) out.push_back(pool[rng.below(r, pool.size())]);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+// Keeps the N best (distance, id) pairs in ascending order; equal distances keep the lower id
+// (candidates arrive in id order and only a strictly better one displaces).
+void keep_best(int id, double d, int n, int* best, double* dist, int& count) {
+    int at = count < n ? count : n;
+    while (at > 0 && d < dist[at - 1]) --at;
+    if (at >= n) return;
+    for (int j = std::min(count, n - 1); j > at; --j) best[j] = best[j - 1], dist[j] = dist[j - 1];
+    best[at] = id, dist[at] = d;
+    count = std::min(count + 1, n);
+}
+
+// Eq. 12: omega_j = 1 - d_j / sum_k d_k (Eq. 11 normalises by their sum); equal weights when
+// every distance is zero, and 1 for a single match.
+void blend_weights(const double* dist, int count, double* omega) {
+    double sum = 0.0;
+    for (int j = 0; j < count; ++j) sum += dist[j];
+    for (int j = 0; j < count; ++j) omega[j] = count == 1 ? 1.0 : sum > 0.0 ? 1.0 - dist[j] / sum : 1.0;
+}
+
+void write_predictions(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
+                       SearchScratch& scratch) {
+    const StNeighbourhood& nb = scratch.neighbourhood;
+    int& count = output.prediction_count(s);
+    count = 0;
+    Prediction* out = output.predictions(s);
+    for (int j = 0; j < output.matches(); ++j) {
+        const int m = output.match(s)[j];
+        if (m < 0 || output.omega(s)[j] <= 0.0) continue;
+        scratch.partner.assign(nb.entries.size(), -1);
+        st_distance(nb, input.entries(m), input.group_start(m), params, scratch.metric, scratch.partner.data(),
+                    std::numeric_limits<double>::infinity());
+        const StEntry* in = input.entries(m);
+        for (int k = 0; k < nb.groups; ++k)
+            for (int e = nb.start[k]; e < nb.start[k + 1]; ++e) {
+                const int p = scratch.partner[e];
+                if (p < 0 || count >= output.prediction_stride()) continue;
+                const double w = output.omega(s)[j] * 0.5 * (nb.entries[e].kappa + in[p].kappa);
+                out[count++] = Prediction{nb.entries[e].sample, k, in[p].offset, w};
+            }
+    }
+}
+
+double search_sample(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
+                     const SearchSettings& settings, SearchScratch& scratch) {
+    output.gather(s, scratch.neighbourhood);
+    gather_candidates(input, output, s, params, settings, scratch);
+    const int n = output.matches();
+    int* best = output.match(s);
+    double* dist = output.distance(s);
+    int count = 0;
+    for (int id : scratch.candidates) {
+        const double bound = count < n ? std::numeric_limits<double>::infinity() : dist[n - 1];
+        const double d = st_distance(scratch.neighbourhood, input.entries(id), input.group_start(id), params,
+                                     scratch.metric, nullptr, bound);
+        if (d < bound) keep_best(id, d, n, best, dist, count);
+    }
+    for (int j = count; j < n; ++j) best[j] = -1, dist[j] = 0.0;
+    blend_weights(dist, count, output.omega(s));
+    for (int j = count; j < n; ++j) output.omega(s)[j] = 0.0;
+    write_predictions(input, output, s, params, scratch);
+    return count > 0 ? dist[0] : 0.0;
+}
+
+}  // namespace
+
+double search_frame(const InputFrames& input, OutputFrames& output, const StParams& params,
+                    const SearchSettings& settings, std::vector<SearchScratch>& scratch, int threads) {
+    const int n = output.size();
+    output.snapshot_matches();
+    std::vector<double> energy(n, 0.0);
+    core::parallel_for(
+        n, threads,
+        [&](int begin, int end, int thread) {
+            for (int s = begin; s < end; ++s)
+                energy[s] = search_sample(input, output, s, params, settings, scratch[thread]);
+        },
+        16);
+    double sum = 0.0;
+    for (double e : energy) sum += e;
+    return n > 0 ? sum / n : 0.0;
+}
+
+void assign_frame(OutputFrames& output, const Domain& domain, double radius, int threads) {
+    const int n = output.size();
+    std::vector<Vec3> next(n);
+    core::parallel_for(
+        n, threads,
+        [&](int begin, int end, int) {
+            for (int s = begin; s < end; ++s) {
+                Vec3 sum;
+                double weight = 0.0;
+                const Prediction* own = output.predictions(s);
+                for (int i = 0; i < output.prediction_count(s); ++i) {
+                    sum += (output.position(own[i].sample, own[i].group) - own[i].offset) * own[i].weight;
+                    weight += own[i].weight;
+                }
+                // The pairs of the neighbours' matches that hold s: where they put s (Eq. 7's
+                // terms of n(s') with s' held fixed, the Jacobi form of section 4.1).
+                output.for_each_neighbour(s, radius, [&](int o) {
+                    const Prediction* theirs = output.predictions(o);
+                    for (int t = 0; t < output.prediction_count(o); ++t)
+                        if (theirs[t].sample == s && theirs[t].group == 0) {
+                            sum += (output.current()[o] + theirs[t].offset) * theirs[t].weight;
+                            weight += theirs[t].weight;
+                        }
+                });
+                Vec3 p = weight > 0.0 ? sum / weight : output.current()[s];
+                if (!domain.inside(p)) p = domain.closest_inside(p);
+                next[s] = p;
+            }
+        },
+        16);
+    output.current() = std::move(next);
+}
+
+}  // namespace tessera::dynamic
+
+namespace tessera::dynamic {
+
+void build_similarity(InputFrames& input, const StParams& params, int k, int scan, std::uint64_t seed, int threads) {
+    const int n = input.size();
+    std::vector<std::vector<int>> similar(n);
+    std::vector<SearchScratch> scratch(core::resolve_threads(threads));
+    core::parallel_for(
+        n, threads,
+        [&](int begin, int end, int thread) {
+            SearchScratch& sc = scratch[thread];
+            std::vector<int> best(k, -1);
+            std::vector<double> dist(k, 0.0);
+            for (int a = begin; a < end; ++a) {
+                // Input a as if it were an output neighbourhood.
+                StNeighbourhood& nb = sc.neighbourhood;
+                const int* start = input.group_start(a);
+                nb.entries.assign(input.entries(a), input.entries(a) + start[params.temporal]);
+                std::copy(start, start + max_temporal + 1, nb.start.begin());
+                nb.groups = params.temporal;
+                const std::vector<int>& pool = input.of_type(input.type(a));
+                const core::KeyedRng rng(seed, core::Purpose::dynamic_similarity, static_cast<std::uint64_t>(a));
+                sc.candidates.clear();
+                for (int r = 0; r < scan && !pool.empty(); ++r) {
+                    const int c = pool[rng.below(r, pool.size())];
+                    if (input.sample(c) != input.sample(a)) sc.candidates.push_back(c);
+                }
+                std::sort(sc.candidates.begin(), sc.candidates.end());
+                sc.candidates.erase(std::unique(sc.candidates.begin(), sc.candidates.end()), sc.candidates.end());
+                int count = 0;
+                for (int c : sc.candidates) {
+                    const double bound = count < k ? std::numeric_limits<double>::infinity() : dist[k - 1];
+                    const double d = st_distance(nb, input.entries(c), input.group_start(c), params, sc.metric,
+                                                 nullptr, bound);
+                    if (d < bound) keep_best(c, d, k, best.data(), dist.data(), count);
+                }
+                similar[a].assign(best.begin(), best.begin() + count);
+            }
+        },
+        16);
+    input.set_similar(std::move(similar));
+}
+
+}  // namespace tessera::dynamic

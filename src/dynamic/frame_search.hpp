@@ -1,0 +1,47 @@
+// The search step of frame-by-frame synthesis (section 4.1; 4.2 for N best matches) and
+// the assignment step (Eq. 6-7, Eq. 11-12), both over every sample of the frame being made,
+// in parallel; each sample writes only its own slots, so results do not depend on threads.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "dynamic/input_frames.hpp"
+#include "dynamic/output_frames.hpp"
+#include "dynamic/st_metric.hpp"
+#include "tessera/domain.hpp"
+
+namespace tessera::dynamic {
+
+struct SearchSettings {
+    SearchMode mode = SearchMode::kcoherence;
+    int random_candidates = 2;
+    std::uint64_t seed = 1;
+    int round = 0;                 // search round within the frame (a key of the random draws)
+    bool first_frame_only = false; // candidates: the input's first usable frame, exhaustively
+};
+
+// Per-thread buffers of the search.
+struct SearchScratch {
+    StNeighbourhood neighbourhood;
+    MetricScratch metric;
+    std::vector<int> candidates, partner;
+};
+
+// Finds each sample's N best input matches (OutputFrames::match/distance/omega) and the
+// predictions of their pairs. Returns the mean best distance (the frame's energy, Eq. 5).
+double search_frame(const InputFrames& input, OutputFrames& output, const StParams& params,
+                    const SearchSettings& settings, std::vector<SearchScratch>& scratch, int threads);
+
+// The Jacobi assignment: each sample moves to the weighted mean of its predictions, the
+// others held where they are; then into the domain (closest point inside).
+// `radius`: the output neighbourhood radius (whose neighbours' pairs may hold the sample).
+void assign_frame(OutputFrames& output, const Domain& domain, double radius, int threads);
+
+// k-coherence sets: for every input sample-frame, the k most similar among `scan` input
+// sample-frames of its type drawn at random (keyed by the seed and the id), other samples
+// only; the exemplar's sample-frames are too many for all pairs (Tong et al. 2002 build
+// theirs from all pairs of a small texture).
+void build_similarity(InputFrames& input, const StParams& params, int k, int scan, std::uint64_t seed, int threads);
+
+}  // namespace tessera::dynamic

@@ -1,0 +1,196 @@
+// dynamic/synthesize_dynamic.cpp — frame-by-frame synthesis (section 4.1, Figure 4): the
+// first frame by the static method, each later frame advected along the matched input
+// motion (plus the global flow) and then optimised by search and assignment against
+// temporal-causal neighbourhoods.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/parallel.hpp"
+#include "core/progress_span.hpp"
+#include "dynamic/frame_search.hpp"
+#include "dynamic/input_frames.hpp"
+#include "dynamic/output_frames.hpp"
+#include "tessera/det.hpp"
+#include "tessera/dynamic.hpp"
+#include "tessera/error.hpp"
+#include "tessera/metrics.hpp"
+#include "tessera/option_table.hpp"
+
+namespace tessera {
+
+namespace {
+
+using namespace dynamic;
+
+constexpr int similarity_k = 4;     // size of the k-coherence sets
+constexpr int similarity_scan = 64; // input sample-frames scanned to build each set
+
+void check_inputs(const Animation& exemplar, const Domain& domain, const DynamicOptions& options) {
+    check_options(dynamic_option_table(), options);
+    exemplar.validate("exemplar");
+    if (exemplar.structure.has_multi_sample_elements())
+        throw Error(ErrorKind::input,
+                    "exemplar: dynamic synthesis takes single-sample elements (particles, agents); threads and "
+                    "sheets are not synthesized yet");
+    if (domain.dimension() != exemplar.structure.dimension)
+        throw Error(ErrorKind::domain, "the output domain is " + std::to_string(domain.dimension()) +
+                                           "D but the exemplar is " + std::to_string(exemplar.structure.dimension) + "D");
+    if (exemplar.frame_count() < options.temporal_size)
+        throw Error(ErrorKind::option, "temporal_size must be at most the exemplar's frame count (" +
+                                           std::to_string(exemplar.frame_count()) + "), got " +
+                                           std::to_string(options.temporal_size));
+}
+
+StParams resolve_params(const Animation& exemplar, const DynamicOptions& options) {
+    StParams p;
+    const Exemplar first = exemplar.frame(options.temporal_size - 1);
+    p.dimension = first.dimension;
+    p.shape = options.shape;
+    p.temporal = options.temporal_size;
+    p.spacing = nearest_neighbor_distances(first, options.threads).mean;
+    if (!(p.spacing > 0.0)) throw Error(ErrorKind::input, "exemplar: its elements have no spacing (all coincide)");
+    // The 1-ring (paper, section 6: "approximately cover the 1-ring neighborhood").
+    p.radius = options.radius > 0.0 ? options.radius : 1.5 * p.spacing;
+    // A pair displaced by half a spacing is as bad as none; input entries further than that
+    // beyond r can pair with nothing, so input neighbourhoods stop there.
+    const double cap = 0.5 * p.spacing;
+    p.input_radius = p.radius + cap;
+    p.cap2 = cap * cap;
+    p.alpha = options.alpha >= 0.0 ? options.alpha : p.spacing * p.spacing;
+    if (options.sigma_p > 0.0) p.inv_sigma_p2 = 1.0 / (options.sigma_p * p.radius * options.sigma_p * p.radius);
+    if (options.sigma_t > 0.0) p.inv_sigma_t2 = 1.0 / (options.sigma_t * options.sigma_t);
+    return p;
+}
+
+// The first frame: the static method on the exemplar's first frame with a full window.
+Arrangement first_frame(const Animation& exemplar, const Domain& domain, const DynamicOptions& options,
+                        const Progress& progress) {
+    DetOptions det;
+    det.seed = options.seed;
+    det.threads = options.threads;
+    // Its stages are reported as parts of "first frame" ("first frame: iteration 3/10").
+    const Progress renamed = !progress ? Progress{} : Progress{[progress](const ProgressEvent& e) {
+        ProgressEvent r = e;
+        if (e.stage != "done") r.stage = "first frame: " + e.stage;
+        return progress(r);
+    }};
+    return synthesize_det(exemplar.frame(options.temporal_size - 1), domain, det, renamed);
+}
+
+std::vector<int> sample_types(const Arrangement& first, const Exemplar& exemplar) {
+    std::vector<int> types(first.samples.size());
+    for (size_t s = 0; s < types.size(); ++s) {
+        const std::string& name = first.types[first.elements[first.samples[s].element].type].name;
+        types[s] = exemplar.find_type(name);
+    }
+    return types;
+}
+
+// Moves a sample that left the domain back in: wrap re-enters it on the far side of the
+// bounding box (its shift moves with it, so its detail trail stays continuous); whatever is
+// still outside (an obstacle, a shaped domain) goes to the nearest point inside.
+void keep_inside(Vec3& p, Vec3& shift, const Domain& domain, bool wrap) {
+    if (wrap) {
+        const Box& box = domain.bounds();
+        for (int k = 0; k < domain.dimension(); ++k) {
+            const double extent = box.hi[k] - box.lo[k];
+            const double turns = std::floor((p[k] - box.lo[k]) / extent);
+            if (turns != 0.0) p[k] -= turns * extent, shift[k] -= turns * extent;
+        }
+    }
+    if (!domain.inside(p)) p = domain.closest_inside(p);
+}
+
+// Advection (section 4.1, "Initialization"): every sample follows the blended motion of its
+// matches (Eq. 11) and the flow; its matches move on to their next input frame.
+void advect(const InputFrames& input, OutputFrames& out, const Vec3& flow_step, const Domain& domain, bool wrap) {
+    const int frame = out.frame();
+    for (int s = 0; s < out.size(); ++s) {
+        Vec3 motion;
+        double weight = 0.0;
+        for (int j = 0; j < out.matches(); ++j) {
+            const int m = out.match(s)[j];
+            if (m < 0) continue;
+            motion += input.motion(m) * out.omega(s)[j];
+            weight += out.omega(s)[j];
+            if (input.next(m) >= 0) out.match(s)[j] = input.next(m);
+        }
+        if (weight > 0.0) motion = motion / weight;
+        Vec3 p = out.past(frame - 1, s) + motion + flow_step;
+        Vec3 shift = out.past_shift(frame - 1, s) + flow_step;
+        keep_inside(p, shift, domain, wrap);
+        out.current()[s] = p;
+        out.current_shift()[s] = shift;
+    }
+}
+
+double frame_step(const Animation& exemplar, int frame, double dt) {
+    return exemplar.times.front() + frame * dt;
+}
+
+}  // namespace
+
+AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& domain, const DynamicOptions& options,
+                                       const Progress& progress) {
+    check_inputs(exemplar, domain, options);
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const StParams params = resolve_params(exemplar, options);
+    const int frames = options.frames > 0 ? options.frames : std::max(2, exemplar.frame_count());
+    const double dt = exemplar.frame_count() > 1
+                          ? (exemplar.times.back() - exemplar.times.front()) / (exemplar.frame_count() - 1)
+                          : 1.0;
+    const int threads = core::resolve_threads(options.threads);
+
+    Arrangement first = first_frame(exemplar, domain, options, core::progress_within(progress, 0.0, 0.2, "first frame"));
+    InputFrames input(exemplar, params, options.threads);
+    if (options.search == SearchMode::kcoherence)
+        build_similarity(input, params, similarity_k, similarity_scan, options.seed, options.threads);
+    OutputFrames out(params.dimension, sample_types(first, exemplar.structure), options.matches, params);
+    for (size_t s = 0; s < first.samples.size(); ++s) out.current()[s] = first.samples[s].p;
+
+    std::vector<SearchScratch> scratch(threads);
+    SearchSettings settings{options.search, options.random_candidates, options.seed, 0, true};
+    AnimatedArrangement result;
+    result.stats.method = "dynamic";
+    result.stats.radius = params.radius;
+    result.stats.seed = options.seed;
+    result.stats.threads = threads;
+    out.index();
+    result.stats.energy.push_back(search_frame(input, out, params, settings, scratch, options.threads));
+    result.structure = static_cast<const Exemplar&>(first);
+    result.add_frame(frame_step(exemplar, 0, dt), out.current());
+    out.commit();
+    settings.first_frame_only = false;
+    const Vec3 flow_step = options.flow * dt;
+    result.stats.init_seconds = elapsed();  // the first frame, the input index and the k-coherence sets
+    for (int f = 1; f < frames; ++f) {
+        const double frame_start = elapsed();
+        advect(input, out, flow_step, domain, options.wrap);
+        double energy = 0.0;
+        for (int round = 0; round < options.iterations; ++round) {
+            settings.round = round;
+            out.index();
+            energy = search_frame(input, out, params, settings, scratch, options.threads);
+            assign_frame(out, domain, params.radius, options.threads);
+        }
+        result.stats.energy.push_back(energy);
+        result.stats.iteration_seconds.push_back(elapsed() - frame_start);
+        result.add_frame(frame_step(exemplar, f, dt), out.current());
+        out.commit();
+        if (progress) {
+            ProgressEvent e{"frame", f, frames, energy, elapsed(), 0.2 + 0.8 * (f + 1) / frames};
+            if (!progress(e)) throw Cancelled();
+        }
+    }
+    for (Sample& s : result.structure.samples) s.time = result.times.front();
+    result.stats.final_energy = result.stats.energy.back();
+    result.stats.total_seconds = elapsed();
+    if (progress) progress(ProgressEvent{"done", frames - 1, frames, result.stats.final_energy, elapsed(), 1.0});
+    return result;
+}
+
+}  // namespace tessera
