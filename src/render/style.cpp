@@ -68,7 +68,9 @@ Frame2D make_frame_2d(const Exemplar& data, const Style& style, const RenderOpti
         f.lo.x = std::min(f.lo.x, p.x - r), f.lo.y = std::min(f.lo.y, p.y - r);
         f.hi.x = std::max(f.hi.x, p.x + r), f.hi.y = std::max(f.hi.y, p.y + r);
     };
+    if (options.view) f.lo = options.view->lo, f.hi = options.view->hi;
     for (const auto& e : data.elements) {
+        if (options.view) break;
         if (e.sample_count <= 1) {
             include(e.position, style.radius_of(e));
             continue;
