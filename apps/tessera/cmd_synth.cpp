@@ -1,7 +1,8 @@
 // apps/tessera/cmd_synth.cpp — `tessera synth INPUT -o OUTPUT`: loads an exemplar,
 // builds the output domain (--scale or --domain), runs tessera::synthesize_det (--method
 // det, the DetOptions given as flags of the same names) or tessera::synthesize_pcf
-// (--method pcf, the PcfSynthOptions likewise), prints progress to stderr, and writes the
+// (--method pcf, the PcfSynthOptions likewise) or tessera::synthesize_dynamic (--method
+// dynamic, synth_dynamic.cpp), prints progress to stderr, and writes the
 // output (data, a picture, or a scene of the elements' geometry) and an optional
 // --preview picture.
 #include <algorithm>
@@ -19,6 +20,8 @@
 #include "interrupt_scope.hpp"
 #include "option_flags.hpp"
 #include "status_printer.hpp"
+#include "synth_dynamic.hpp"
+#include "tessera/animation_io.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -35,10 +38,13 @@ struct SynthArgs {
     // The methods' options, as flags made from their tables (tessera/option_table.hpp).
     MethodOptions det_options = method_options("det", tessera::det_option_table());
     MethodOptions pcf_options = method_options("pcf", tessera::pcf_option_table());
+    MethodOptions dynamic_options = method_options("dynamic", tessera::dynamic_option_table());
     OptionFlags flags;
     tessera::DetOptions det;
     tessera::PcfSynthOptions pcf;
+    tessera::DynamicOptions dynamic;
     CLI::App* command = nullptr;
+    CLI::Option* method_option = nullptr;
     CLI::Option* scale_option = nullptr;
     CLI::Option* domain_option = nullptr;
 };
@@ -48,28 +54,56 @@ tessera::Domain output_domain(const SynthArgs& args, const tessera::Exemplar& ex
     return tessera::parse_output_domain(args.domain, exemplar, args.scale, "--domain");
 }
 
+// The methods that have the flag `flag` (as typed), "det or pcf".
+std::string methods_with(const SynthArgs& args, const std::string& flag) {
+    std::string names;
+    for (const MethodOptions* m : {&args.det_options, &args.pcf_options, &args.dynamic_options}) {
+        const std::vector<std::string> outside = args.flags.given_outside(*m);
+        if (std::find(outside.begin(), outside.end(), flag) != outside.end()) continue;
+        names += (names.empty() ? "" : " or ") + m->method;
+    }
+    return names;
+}
+
 // Checks every flag that does not need the input, naming the flag and its value, and
 // stores the method's options.
 void check_options(SynthArgs& args) {
-    if (args.method != "det" && args.method != "pcf")
-        fail_option("--method must be det or pcf, got '" + args.method + "'");
-    const bool pcf = args.method == "pcf";
-    for (const std::string& flag : args.flags.given_outside(pcf ? args.pcf_options : args.det_options))
-        fail_option(flag + " applies to --method " + (pcf ? "det" : "pcf") + " only");
+    // An INPUT with frames is animated: the dynamic method, unless --method says otherwise.
+    if (args.method_option->count() == 0 && tessera::has_frames(args.input)) args.method = "dynamic";
+    if (args.method != "det" && args.method != "pcf" && args.method != "dynamic")
+        fail_option("--method must be det, pcf or dynamic, got '" + args.method + "'");
+    const MethodOptions& method = args.method == "pcf"       ? args.pcf_options
+                                  : args.method == "dynamic" ? args.dynamic_options
+                                                             : args.det_options;
+    for (const std::string& flag : args.flags.given_outside(method))
+        fail_option(flag + " applies to --method " + methods_with(args, flag) + " only");
     if (!std::isfinite(args.scale) || !(args.scale > 0.0))
         fail_option("--scale must be a number > 0, got " + format_number(args.scale));
-    if (pcf)
+    if (args.method == "pcf")
         args.flags.apply(tessera::pcf_option_table(), args.pcf);
+    else if (args.method == "dynamic")
+        args.flags.apply(tessera::dynamic_option_table(), args.dynamic);
     else
         args.flags.apply(tessera::det_option_table(), args.det);
     if (!args.det.boundary_sides.empty() && !(args.det.boundary_distance > 0.0))
         fail_option("--boundary needs --boundary-distance D > 0");
 }
 
+void run_synth_dynamic(SynthArgs& args, StatusPrinter& status) {
+    const DynamicRun run{args.input, args.input_domain, args.output, args.preview, args.dynamic, args.quiet};
+    check_dynamic_outputs(run);
+    if (args.domain_option->count() > 0) tessera::check_domain_spec(args.domain, "--domain");
+    run_dynamic(run, status, [&](const tessera::Exemplar& first) { return output_domain(args, first); });
+}
+
 void run_synth(SynthArgs& args) {
     std::optional<InterruptScope> interrupt_scope(std::in_place);
     StatusPrinter status("synth", args.quiet, std::cerr);
     check_options(args);
+    if (args.method == "dynamic") {
+        interrupt_scope.reset();  // run_dynamic has its own
+        return run_synth_dynamic(args, status);
+    }
     if (args.domain_option->count() > 0) tessera::check_domain_spec(args.domain, "--domain");
     check_arrangement_output(args.output, "-o");
     tessera::RenderOptions preview_options;
@@ -192,12 +226,15 @@ Subcommand add_synth_command(CLI::App& app) {
         ->type_name("FILE");
     add_meshes_option(*cmd, args->meshes);
     add_gltf_instancing_option(*cmd, args->gltf_instancing);
-    cmd->add_option("--method", args->method,
-                    "Synthesis method: det (neighbourhood matching, Discrete Element Textures) or pcf "
-                    "(2D disks from pair correlation functions, docs/pcf_synthesis.md).")
-        ->capture_default_str();
-    // Every option of both methods, from their tables: shared ones (--seed, --iterations) once.
-    args->flags.add(*cmd, {args->det_options, args->pcf_options});
+    args->method_option =
+        cmd->add_option("--method", args->method,
+                        "Synthesis method: det (neighbourhood matching, Discrete Element Textures), pcf "
+                        "(2D disks from pair correlation functions, docs/pcf_synthesis.md) or dynamic (elements "
+                        "in space and time from an exemplar with frames, docs/dynamic.md; the default when INPUT "
+                        "has frames).")
+            ->capture_default_str();
+    // Every option of the methods, from their tables: shared ones (--seed, --iterations) once.
+    args->flags.add(*cmd, {args->det_options, args->pcf_options, args->dynamic_options});
     add_quiet_option(*cmd, args->quiet);
     args->command = cmd;
     return {cmd, [args] { run_synth(*args); }};

@@ -1,10 +1,14 @@
 // tessera/tessera.hpp — umbrella header: the whole public API.
 #pragma once
 
+#include "tessera/animation.hpp"
+#include "tessera/animation_io.hpp"
+#include "tessera/animation_render.hpp"
 #include "tessera/brush.hpp"
 #include "tessera/det.hpp"
 #include "tessera/det_session.hpp"
 #include "tessera/domain.hpp"
+#include "tessera/dynamic.hpp"
 #include "tessera/edit.hpp"
 #include "tessera/error.hpp"
 #include "tessera/exemplar.hpp"

@@ -7,6 +7,7 @@
 
 #include "cli_fixture.hpp"
 #include "tessera/det.hpp"
+#include "tessera/dynamic.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/option_table.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -71,6 +72,10 @@ TEST_F(CliOptions, EveryPcfOptionIsAFlagWithItsDefaultDocsAndCheck) {
     walk(tessera::pcf_option_table(), "synth", "--method pcf");
 }
 
+TEST_F(CliOptions, EveryDynamicOptionIsAFlagWithItsDefaultDocsAndCheck) {
+    walk(tessera::dynamic_option_table(), "synth", "--method dynamic");
+}
+
 TEST_F(CliOptions, EveryGrowOptionIsAFlagWithItsDefaultDocsAndCheck) {
     walk(tessera::grow_option_table(), "grow", "--region box:20,20");
 }
@@ -79,6 +84,9 @@ TEST_F(CliOptions, AFlagOfTheOtherMethodIsRefused) {
     const Result r = run("synth '" + example("two_class_2d.json") + "' -o '" + path("out.json") + "' --max-fails 3");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("--max-fails applies to --method pcf only"), std::string::npos) << r.err;
+    const Result d = run("synth '" + example("two_class_2d.json") + "' -o '" + path("out.json") + "' --matches 3");
+    EXPECT_EQ(d.code, 2);
+    EXPECT_NE(d.err.find("--matches applies to --method dynamic only"), std::string::npos) << d.err;
 }
 
 }  // namespace
