@@ -9,6 +9,7 @@
 //   B5        both methods on every shared real dataset (field_data_scenarios.cpp)
 //   B6-*      on-demand growth, 10,000 to 1,000,000 elements, 2D and 3D (grow_scenarios.cpp)
 //   B7-*      worlds of 4 x 4 to 64 x 64 deterministic tiles in one process (world_scenarios.cpp)
+//   B8-*      dynamic synthesis: 1,000 particles x 100 frames, frame by frame (dynamic_scenarios.cpp)
 //   B9        brushing: a 100-element paint stroke and "fill the rest" of a 2,000-element canvas
 // Usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR]
 // Prints a Markdown table (median of repeated runs for the small scenarios).
@@ -24,6 +25,7 @@
 #include "grow_scenarios.hpp"
 #include "pcf_scenarios.hpp"
 #include "brush_scenarios.hpp"
+#include "dynamic_scenarios.hpp"
 #include "world_scenarios.hpp"
 #include "tessera/tessera.hpp"
 
@@ -51,8 +53,8 @@ void run(const std::string& dir, bool quick, int threads, const std::string& sha
 
 int main(int argc, char** argv) {
     const char* usage =
-        "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR] [--only B1|B4|B5|B6|B7|B9]\n"
-        "Runs benchmarks B1-B7 and B9 (docs/benchmarks.md) and prints Markdown tables; --quick skips B1-large,\n"
+        "usage: tessera_bench EXAMPLES_DIR [--quick] [--threads T] [--shared DATA_DIR] [--only B1|B4|B5|B6|B7|B8|B9]\n"
+        "Runs benchmarks B1-B9 (docs/benchmarks.md) and prints Markdown tables; --quick skips B1-large,\n"
         "B6's 1,000,000-element runs and B7's 64 x 64 tiles,\n"
         "--shared names the real point patterns' directory (default EXAMPLES_DIR/../tests/data/spatstat),\n"
         "--only runs one table (B1 = B1-B3).\n";
@@ -136,6 +138,7 @@ void run(const std::string& dir, bool quick, int threads, const std::string& sha
     if (wanted("B5")) tessera_bench::run_field_data_scenarios(shared, threads);
     if (wanted("B6")) tessera_bench::run_grow_scenarios(dir, quick, threads);
     if (wanted("B7")) tessera_bench::run_world_scenarios(dir, quick, threads);
+    if (wanted("B8")) tessera_bench::run_dynamic_scenarios(dir, threads);
     if (wanted("B9")) tessera_bench::run_brush_scenarios(dir, threads);
 }
 
