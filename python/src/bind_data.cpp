@@ -402,6 +402,8 @@ void data_properties(Class& c) {
         .def("copy", [](const typename Class::type& e) { return e; });
 }
 
+}  // namespace
+
 // The "stats" object of an output .json file (one list of fields, kept by the library's
 // writer), plus the timings and thread count a file leaves out for byte-identical output.
 py::dict stats_of(const tessera::RunStats& s) {
@@ -412,8 +414,6 @@ py::dict stats_of(const tessera::RunStats& s) {
     d["threads"] = s.threads;
     return d;
 }
-
-}  // namespace
 
 void bind_data(py::module_& m) {
     py::class_<tessera::Exemplar> exemplar(m, "Exemplar",

@@ -1,12 +1,13 @@
-// synthesize for Python: options arrive as a dict keyed by the Python keyword names
-// (checked by the library's option tables, option_table.hpp), the GIL is released while the
-// library works, and the progress callable is called with the GIL held. A callable that
-// raises cancels the run and its exception reaches the caller; one that returns False
-// cancels it with tessera.Cancelled.
+// synthesize for Python (det, pcf; dynamic over animations): options arrive as a dict keyed
+// by the Python keyword names (checked by the library's option tables, option_table.hpp), the
+// GIL is released while the library works, and the progress callable is called with the GIL
+// held. A callable that raises cancels the run and its exception reaches the caller; one that
+// returns False cancels it with tessera.Cancelled.
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <type_traits>
 
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -14,6 +15,7 @@
 #include "option_values.hpp"
 #include "tessera/brush.hpp"
 #include "tessera/det.hpp"
+#include "tessera/dynamic.hpp"
 #include "tessera/edit.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/grow.hpp"
@@ -25,11 +27,13 @@ namespace py = pybind11;
 namespace tessera_python {
 namespace {
 
-tessera::Arrangement run(const std::function<tessera::Arrangement(const tessera::Progress&)>& method,
-                         const py::object& callback) {
+// Runs `method(progress)` with the GIL released; its result (Arrangement, AnimatedArrangement).
+template <class Method>
+auto run(const Method& method, const py::object& callback) {
+    using Result = std::invoke_result_t<const Method&, const tessera::Progress&>;
     PythonProgress progress{callback};
     const tessera::Progress p = progress.progress();
-    std::optional<tessera::Arrangement> result;
+    std::optional<Result> result;
     {
         py::gil_scoped_release release;
         try {
@@ -46,12 +50,16 @@ tessera::Arrangement run(const std::function<tessera::Arrangement(const tessera:
     return std::move(*result);
 }
 
-tessera::Arrangement synthesize(const tessera::Exemplar& exemplar, const tessera::Domain& domain,
-                                const std::string& method, const py::dict& options, const py::object& callback) {
+void check_dimension(const tessera::Domain& domain, const tessera::Exemplar& exemplar) {
     if (domain.dimension() != exemplar.dimension)
         throw tessera::Error(tessera::ErrorKind::domain, "domain is " + std::to_string(domain.dimension()) +
                                                              "D but the exemplar is " +
                                                              std::to_string(exemplar.dimension) + "D");
+}
+
+tessera::Arrangement synthesize(const tessera::Exemplar& exemplar, const tessera::Domain& domain,
+                                const std::string& method, const py::dict& options, const py::object& callback) {
+    check_dimension(domain, exemplar);
     if (method == "det") {
         tessera::DetOptions o;
         apply_keywords(tessera::det_option_table(), o, options, exemplar.dimension, "method 'det'");
@@ -66,6 +74,16 @@ tessera::Arrangement synthesize(const tessera::Exemplar& exemplar, const tessera
                    callback);
     }
     bad("method must be 'det' or 'pcf', got '" + method + "'");
+}
+
+// method="dynamic": an animation over `domain`, frame by frame (tessera/dynamic.hpp).
+tessera::AnimatedArrangement synthesize_dynamic(const tessera::Animation& exemplar, const tessera::Domain& domain,
+                                                const py::dict& options, const py::object& callback) {
+    check_dimension(domain, exemplar.structure);
+    tessera::DynamicOptions o;
+    apply_keywords(tessera::dynamic_option_table(), o, options, exemplar.structure.dimension, "method 'dynamic'");
+    return run([&](const tessera::Progress& p) { return tessera::synthesize_dynamic(exemplar, domain, o, p); },
+               callback);
 }
 
 tessera::Arrangement synthesize_model(const tessera::PcfModel& model, const tessera::Domain& domain,
@@ -86,6 +104,8 @@ tessera::Arrangement synthesize_model(const tessera::PcfModel& model, const tess
 void bind_synthesize(py::module_& m) {
     m.def("synthesize", &synthesize, py::arg("exemplar"), py::arg("domain"), py::arg("method"), py::arg("options"),
           py::arg("progress"));
+    m.def("synthesize_dynamic", &synthesize_dynamic, py::arg("exemplar"), py::arg("domain"), py::arg("options"),
+          py::arg("progress"));
     m.def("synthesize_model", &synthesize_model, py::arg("model"), py::arg("domain"), py::arg("options"),
           py::arg("progress"));
     m.def(
@@ -94,6 +114,7 @@ void bind_synthesize(py::module_& m) {
             py::dict tables;
             tables["det"] = describe_table(tessera::det_option_table());
             tables["pcf"] = describe_table(tessera::pcf_option_table());
+            tables["dynamic"] = describe_table(tessera::dynamic_option_table());  // synthesize(method="dynamic")
             tables["grow"] = describe_table(tessera::grow_option_table());
             tables["brush"] = describe_table(tessera::brush_option_table());  // tessera.BrushCanvas, tessera.brush
             tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)

@@ -8,15 +8,21 @@
 
 #include <string>
 
+namespace tessera {
+struct RunStats;
+}
+
 namespace tessera_python {
 
 // Exemplar / Arrangement <-> numpy arrays (bind_data.cpp).
 void bind_data(pybind11::module_& m);
+// Animation / AnimatedArrangement <-> numpy arrays, their files and the animated PNG (bind_animation.cpp).
+void bind_animation(pybind11::module_& m);
 // Domain and its constructors (bind_domain.cpp).
 void bind_domain(pybind11::module_& m);
 // tessera::Error -> the exception classes of tessera.errors (bind_errors.cpp).
 void bind_errors(pybind11::module_& m);
-// synthesize_det / synthesize_pcf with options, progress and the GIL released (bind_synthesize.cpp).
+// synthesize_det / synthesize_pcf / synthesize_dynamic with options, progress and the GIL released (bind_synthesize.cpp).
 void bind_synthesize(pybind11::module_& m);
 // Grower (on-demand growth) with options, progress and the GIL released (bind_grow.cpp).
 void bind_grow(pybind11::module_& m);
@@ -31,5 +37,8 @@ void bind_analysis(pybind11::module_& m);
 // "--patch-size must be ..." -> "patch_size must be ...": library messages name options by
 // their CLI flags; Python users know them by their keyword names.
 std::string python_option_names(const std::string& message);
+
+// A run's statistics as the dict of Arrangement.stats (bind_data.cpp).
+pybind11::dict stats_of(const tessera::RunStats& stats);
 
 }  // namespace tessera_python

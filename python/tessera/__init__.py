@@ -10,7 +10,9 @@ with elements whose local arrangement looks like the exemplar's everywhere.
     out = tessera.synthesize(ex, domain="box:40,40", seed=7)
     tessera.save(out, "forest.usda")
 
-or grow one on demand, next to what exists, with :class:`Grower`.
+or grow one on demand, next to what exists, with :class:`Grower`, or synthesize an
+animation from an animated exemplar (:class:`Animation`, :func:`animation`,
+``synthesize(..., method="dynamic")``).
 
 Data travel as numpy arrays (see :class:`Exemplar`) or as files (:func:`load`,
 :func:`save`; formats by extension as in the CLI, docs/format.md). Options of
@@ -27,17 +29,22 @@ import numbers as _numbers
 import os as _os
 
 from . import _options, _tessera
-from ._tessera import Arrangement, Domain, Exemplar, PcfModel
+from ._tessera import AnimatedArrangement, Animation, Arrangement, Domain, Exemplar, PcfModel
 from .errors import (Cancelled, DomainError, FileError, InputError, InternalError, OptionError,
                      TesseraError)
 from . import world  # tessera.world: unbounded worlds of deterministic tiles
 
 __version__ = _tessera.version
 __all__ = [
-    "Arrangement", "BrushCanvas", "Cancelled", "Domain", "DomainError", "Exemplar", "FileError", "Grower",
-    "InputError", "InternalError", "OptionError", "PcfModel", "TesseraError", "analyze", "brush", "exemplar", "load",
-    "metrics", "pair_correlation", "render", "save", "synthesize",
+    "AnimatedArrangement", "Animation", "Arrangement", "BrushCanvas", "Cancelled", "Domain", "DomainError",
+    "Exemplar", "FileError", "Grower", "InputError", "InternalError", "OptionError", "PcfModel", "TesseraError",
+    "analyze", "animation", "brush", "exemplar", "load", "load_animation", "metrics", "pair_correlation", "render",
+    "save", "save_animation", "synthesize",
 ]
+
+# The methods of synthesize, each with its option table.
+_SYNTH_METHODS = ("det", "pcf", "dynamic")
+
 
 def exemplar(positions, classes=None, class_names=None, radii=None, orientations=None, scales=None,
              ids=None, locked=None, element_of_sample=None, sample_ids=None, times=None,
@@ -74,8 +81,43 @@ def exemplar(positions, classes=None, class_names=None, radii=None, orientations
 def load(path, input_domain=None):
     """Load an exemplar or a previous output from a .json (tessera's native format) or
     .csv table (docs/format.md). input_domain: the observation window of a CSV file (a
-    Domain or (lo, hi) corners; default the points' bounding box)."""
+    Domain or (lo, hi) corners; default the points' bounding box). A file with frames gives
+    its frame 0 (load_animation reads them all)."""
     return _tessera.load(_os.fspath(path), _as_domain(input_domain, None, 2.0, "input_domain"))
+
+
+def animation(exemplar, positions, times=None):
+    """Build an Animation (elements in space and time) from an exemplar and numpy arrays.
+
+    exemplar   the elements: an Exemplar (classes, radii, ids, ...; its domain is the
+               animation's) or a path to one. Its own positions are not used.
+    positions  F x S x d: the positions of the exemplar's S samples (in its sample order) in
+               each of F frames; d is the exemplar's dimension.
+    times      F strictly increasing time stamps; default 0, 1, ..., F-1.
+
+    Raises OptionError (a ValueError) naming the array with the wrong shape, InputError
+    when the data break the model (time stamps that do not increase, NaN positions).
+    """
+    exemplar = _as_data(exemplar)
+    if not isinstance(exemplar, Exemplar):
+        raise OptionError("exemplar must be a tessera.Exemplar or a file path, got %s" % type(exemplar).__name__)
+    return _tessera.make_animation(exemplar, positions, times)
+
+
+def load_animation(path, input_domain=None):
+    """Load an Animation from .json or .csv (docs/format.md, "Animations (frames)"); a file
+    without frames gives a one-frame animation. input_domain as for load."""
+    return _tessera.load_animation(_os.fspath(path), _as_domain(input_domain, None, 2.0, "input_domain"))
+
+
+def save_animation(animation, path):
+    """Write an Animation, chosen by the extension of path, atomically: .json (with the run
+    statistics of an AnimatedArrangement), .csv (one row per sample per frame), or .png: an
+    animated PNG with each particle's path over the last 6 frames drawn behind it (as
+    `tessera synth -o clip.png` writes it)."""
+    if not isinstance(animation, Animation):
+        raise OptionError("animation must be a tessera.Animation, got %s" % type(animation).__name__)
+    _tessera.save_animation(animation, _os.fspath(path))
 
 
 def save(data, path, *, gltf_instancing="gpu"):
@@ -91,7 +133,10 @@ def save(data, path, *, gltf_instancing="gpu"):
               EXT_mesh_gpu_instancing, "nodes" writes one node per element (for viewers
               without the extension, Blender 3.4 among them)
       .obj / .mesh.ply  the elements' triangle meshes
-      .png / .svg  a preview picture"""
+      .png / .svg  a preview picture
+    An Animation is written by save_animation (.json, .csv, .png)."""
+    if isinstance(data, Animation):
+        return save_animation(data, path)
     _tessera.save(data, _os.fspath(path), gltf_instancing)
 
 
@@ -106,38 +151,55 @@ def render(data, path, width=800, meshes="auto", legend=True):
 
 
 def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None, **options):
-    """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement.
+    """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement
+    (an AnimatedArrangement for method="dynamic").
 
-    exemplar  an Exemplar (from tessera.exemplar or tessera.load), a path to one, or, for
+    exemplar  an Exemplar (from tessera.exemplar or tessera.load), an Animation (from
+              tessera.animation or tessera.load_animation), a path to either, or, for
               method="pcf", an analysed PcfModel (then `domain` is required).
     domain    the output domain: a Domain; (lo, hi) corners; a string in the CLI's --domain
               forms ("box:W,H[,D]" from the exemplar's lower corner, "box:xmin,ymin,xmax,ymax",
               "polygon:FILE.json", "mask:FILE.png[@box]", "mesh:FILE[,res]", "shell:FILE,t[,res]");
-              or None: the exemplar's domain scaled by `scale` (2 = about 4x the elements in 2D).
+              or None: the exemplar's domain scaled by `scale` (2 = about 4x the elements in 2D);
+              for an Animation, that of its frame 0.
     method    "det": neighbourhood matching (Discrete Element Textures; 2D and 3D, any elements);
-              "pcf": 2D disks from pair correlation functions (multi-class, dependent classes).
+              "pcf": 2D disks from pair correlation functions (multi-class, dependent classes);
+              "dynamic": an animation (Dynamic Element Textures) of single-sample elements,
+              frame by frame, like an animated exemplar.
+              An Animation, or a path to a file with frames, is synthesized by "dynamic" when
+              method is left at "det" (as `tessera synth` picks it); pass its frame 0
+              (animation.exemplar, tessera.load(path)) for a static method. An Exemplar given
+              with method="dynamic" is a one-frame animation: still, unless `flow` moves it.
     progress  optional callable, called with a dict (stage, iteration, iterations, energy,
               elapsed, fraction) for every event of the run: its stages (det: "init",
               "patches", "fill", "iteration", "relax", "repair", "settle" with physics;
-              pcf: "analysis", "init", "iteration", "repair") with their step
-              iteration / iterations where they have one, and the end ("done"); fraction is
-              the share of the whole run done, 0 to 1 (1 at "done"); the same events the
-              CLI prints. Return False to cancel (tessera.Cancelled is
-              raised); an exception it raises cancels the run and propagates.
+              pcf: "analysis", "init", "iteration", "repair"; dynamic: "first frame",
+              "frame") with their step iteration / iterations where they have one, and the
+              end ("done"); fraction is the share of the whole run done, 0 to 1 (1 at
+              "done"); the same events the CLI prints. Return False to cancel
+              (tessera.Cancelled is raised); an exception it raises cancels the run and
+              propagates.
 
-    The options of both methods (listed below, from the library's option table; the same
+    The options of the methods (listed below, from the library's option tables; the same
     names, defaults and checks as `tessera synth`'s flags, dashes written as underscores):
     seed (the same inputs, options and seed give identical output whatever `threads` is),
-    iterations (default 10 for det, 100 for pcf), relax_sweeps and threads are shared; the
-    others belong to one method. None keeps an option's default.
-    An option of the other method set to a value other than its default is an OptionError.
+    iterations (default 10 for det, 100 for pcf, 2 for dynamic), threads and others are
+    shared; the rest belong to one method. None keeps an option's default.
+    An option only other methods have, set to a value other than their default, is an
+    OptionError.
 
     Raises OptionError/DomainError/InputError (ValueErrors) naming what is wrong, FileError,
     Cancelled. The GIL is released while the library works.
     """
-    options = _options.of_method("synthesize", method, ("det", "pcf"), options)
+    method = _method_for(exemplar, method)
+    if isinstance(exemplar, Animation) and method != "dynamic":
+        raise OptionError("an Animation is synthesized with method='dynamic'; pass animation.exemplar (its frame 0) "
+                          "for method=%r" % (method,))
+    options = _options.of_method("synthesize", method, _SYNTH_METHODS, options)
     if progress is not None and not callable(progress):
         raise OptionError("progress must be callable, got %r" % (progress,))
+    if method == "dynamic":
+        return _synthesize_dynamic(exemplar, domain, scale, options, progress)
     if isinstance(exemplar, (str, bytes, _os.PathLike)):
         exemplar = load(exemplar)
     if isinstance(exemplar, PcfModel):
@@ -151,13 +213,37 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None,
         return _tessera.synthesize_model(exemplar, _as_domain(domain, None, scale, "domain"), options,
                                          progress)
     if not isinstance(exemplar, Exemplar):
-        raise OptionError("exemplar must be a tessera.Exemplar, a PcfModel or a file path, got %s"
+        raise OptionError("exemplar must be a tessera.Exemplar, an Animation, a PcfModel or a file path, got %s"
                           % type(exemplar).__name__)
     return _tessera.synthesize(exemplar, _as_domain(domain, exemplar, scale, "domain"), method, options,
                                progress)
 
 
-_options.with_signature(synthesize, ("exemplar", "domain", "scale", "method"), ("det", "pcf"), ("progress",))
+def _method_for(exemplar, method):
+    """The method a call asks for: the default "det" means "dynamic" for an Animation or a
+    path to a file with frames (`tessera synth` picks the method by its input the same way)."""
+    if method != "det":
+        return method
+    if isinstance(exemplar, Animation):
+        return "dynamic"
+    if isinstance(exemplar, (str, bytes, _os.PathLike)) and _tessera.has_frames(_os.fspath(exemplar)):
+        return "dynamic"
+    return method
+
+
+def _synthesize_dynamic(exemplar, domain, scale, options, progress):
+    if isinstance(exemplar, (str, bytes, _os.PathLike)):
+        exemplar = load_animation(exemplar)
+    elif isinstance(exemplar, Exemplar):
+        exemplar = _tessera.animation_from_exemplar(exemplar)
+    if not isinstance(exemplar, Animation):
+        raise OptionError("exemplar must be a tessera.Animation, an Exemplar or a file path for method='dynamic', "
+                          "got %s" % type(exemplar).__name__)
+    return _tessera.synthesize_dynamic(exemplar, _as_domain(domain, exemplar.exemplar, scale, "domain"), options,
+                                       progress)
+
+
+_options.with_signature(synthesize, ("exemplar", "domain", "scale", "method"), _SYNTH_METHODS, ("progress",))
 
 
 class Grower(_tessera.Grower):

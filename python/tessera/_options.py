@@ -1,8 +1,8 @@
-"""The keyword options of tessera.synthesize, tessera.Grower, tessera.pair_correlation and
-tessera.metrics, made from the library's option tables (``_tessera.option_tables()``,
-include/tessera/option_table.hpp): one table
-per method declares each option once (name, kind, default, doc, check), and the CLI's
-flags, these keywords, their defaults, their docs and their checks all come from it.
+"""The keyword options of tessera.synthesize (det, pcf, dynamic), tessera.Grower,
+tessera.pair_correlation and tessera.metrics, made from the library's option tables
+(``_tessera.option_tables()``, include/tessera/option_table.hpp): one table per method
+declares each option once (name, kind, default, doc, check), and the CLI's flags, these
+keywords, their defaults, their docs and their checks all come from it.
 """
 
 import inspect
@@ -78,16 +78,25 @@ def check_keywords(name, given, methods):
             raise TypeError("%s() got an unexpected keyword argument %r" % (name, keyword))
 
 
+def alternatives(names):
+    """'a' or 'b'; 'a', 'b' or 'c'."""
+    quoted = ["%r" % (name,) for name in names]
+    return quoted[0] if len(quoted) == 1 else "%s or %s" % (", ".join(quoted[:-1]), quoted[-1])
+
+
 def of_method(name, method, methods, options):
-    """The keywords of `options` that belong to `method`, one of the two `methods` of the
-    call `name`: a TypeError for a keyword neither has, an OptionError for another method or
-    for an option of the other method set off its default."""
+    """The keywords of `options` that belong to `method`, one of the `methods` of the call
+    `name`: a TypeError for a keyword none has, an OptionError for another method or for an
+    option only other methods have set off their defaults (a value that is some owner's
+    default is taken for an unset option, as None is)."""
     check_keywords(name, options, methods)
     if method not in methods:
-        raise OptionError("method must be %r or %r, got %r" % (methods[0], methods[1], method))
-    other = methods[1] if method == methods[0] else methods[0]
-    mine, theirs = set(keywords(method)), defaults(other)
+        raise OptionError("method must be %s, got %r" % (alternatives(methods), method))
+    mine = set(keywords(method))
     for keyword, value in options.items():
-        if keyword not in mine and value is not None and value != theirs[keyword]:
-            raise OptionError("%s applies to method=%r only" % (keyword, other))
+        if keyword in mine or value is None:
+            continue
+        owners = [m for m in methods if m != method and keyword in keywords(m)]
+        if all(value != defaults(m)[keyword] for m in owners):
+            raise OptionError("%s applies to method=%s only" % (keyword, alternatives(owners)))
     return {keyword: value for keyword, value in options.items() if keyword in mine}

@@ -1,5 +1,6 @@
 """The option tables (include/tessera/option_table.hpp) are the one declaration of every
-option: walk them and check that each option is a keyword of tessera.synthesize,
+option: walk them and check that each option is a keyword of tessera.synthesize (det, pcf,
+dynamic),
 tessera.Grower, tessera.pair_correlation and tessera.metrics with the table's default, a
 flag of `tessera synth` / `grow` / `edit` / `analyze` / `metrics` whose --help shows that
 default, a row of docs/cli.md, and that a value outside its check is refused with the
@@ -18,9 +19,11 @@ from tessera import _tessera
 
 TABLES = _tessera.option_tables()
 # The commands each table makes flags for (the estimate's: analyze --standard-pcf and metrics).
-COMMANDS = {"det": ("synth",), "pcf": ("synth",), "grow": ("grow",), "edit": ("edit",), "analyze": ("analyze",),
+COMMANDS = {"det": ("synth",), "pcf": ("synth",), "dynamic": ("synth",), "grow": ("grow",), "edit": ("edit",), "analyze": ("analyze",),
             "pair_correlation": ("analyze", "metrics"), "brush": ("brush",)}
-PYTHON_METHODS = ("det", "pcf", "grow", "pair_correlation", "brush")
+PYTHON_METHODS = ("det", "pcf", "dynamic", "grow", "pair_correlation", "brush")
+# The methods of tessera.synthesize: one keyword per option name over them.
+SYNTH_METHODS = ("det", "pcf", "dynamic")
 
 
 def rows(methods=tuple(COMMANDS)):
@@ -48,11 +51,12 @@ def functions_of(method):
 
 
 def expected_python_default(method, row):
-    """The keyword's default: the row's, or None where det and pcf differ (each its own)."""
-    if method in ("grow", "pair_correlation", "brush"):
+    """The keyword's default: the row's, or None where the methods of synthesize that have it
+    differ (each then uses its own)."""
+    if method not in SYNTH_METHODS:
         return row["default"]
-    other = [r for r in TABLES["pcf" if method == "det" else "det"] if r["name"] == row["name"]]
-    return None if other and other[0]["default"] != row["default"] else row["default"]
+    defaults = {repr(r["default"]) for m in SYNTH_METHODS for r in TABLES[m] if r["name"] == row["name"]}
+    return row["default"] if len(defaults) == 1 else None
 
 
 def bad_value(row):
@@ -151,7 +155,7 @@ def test_a_value_outside_the_check_names_the_flag(item, tmp_path, root):
     args = [example, "-o", str(out)]
     if method == "grow":
         args += ["--region", "box:20,20"]
-    elif method in ("det", "pcf"):
+    elif method in SYNTH_METHODS:
         args += ["--method", method]
     elif method == "edit":
         edit = tmp_path / "edit.json"
