@@ -34,14 +34,20 @@ void coherent_candidates(const InputFrames& input, const OutputFrames& output, i
         out.push_back(m);
         for (int c : input.similar(m)) out.push_back(c);
     }
-    // Each near neighbour's best match, shifted by the offset between the two samples.
+    // Each near neighbour's best match, shifted by the offset between the two samples. Where
+    // the shift lands near the sample's own best match (the two copy the same input patch,
+    // the common case once synthesis is coherent) that match is the candidate already.
     const StNeighbourhood& nb = scratch.neighbourhood;
+    const int own = output.prior_match(s)[0];
+    const double same2 = 0.09 * params.spacing * params.spacing;
     const int end = std::min(nb.start[1], nb.start[0] + coherent_neighbours);
     for (int e = nb.start[0]; e < end; ++e) {
         const int o = nb.entries[e].sample;
         const int m = output.prior_match(o)[0];
         if (m < 0) continue;
         const Vec3 target = input.position(m) - nb.entries[e].offset;
+        if (own >= 0 && input.frame(own) == input.frame(m) && squared_norm(input.position(own) - target) < same2)
+            continue;
         const int c = input.nearest(input.frame(m), target, type, params.input_radius);
         if (c >= 0) out.push_back(c);
     }
@@ -110,7 +116,7 @@ void write_predictions(const InputFrames& input, OutputFrames& output, int s, co
                 const int p = scratch.partner[e];
                 if (p < 0 || count >= output.prediction_stride()) continue;
                 const double w = output.omega(s)[j] * 0.5 * (nb.entries[e].kappa + in[p].kappa);
-                out[count++] = Prediction{nb.entries[e].sample, k, in[p].offset, w};
+                out[count++] = Prediction{nb.entries[e].sample, k, nb.entries[e].offset - in[p].offset, w};
             }
     }
 }
@@ -155,7 +161,7 @@ double search_frame(const InputFrames& input, OutputFrames& output, const StPara
     return n > 0 ? sum / n : 0.0;
 }
 
-void assign_frame(OutputFrames& output, const Domain& domain, double radius, int threads) {
+void assign_frame(OutputFrames& output, double radius, int threads) {
     const int n = output.size();
     std::vector<Vec3> next(n);
     core::parallel_for(
@@ -165,8 +171,9 @@ void assign_frame(OutputFrames& output, const Domain& domain, double radius, int
                 Vec3 sum;
                 double weight = 0.0;
                 const Prediction* own = output.predictions(s);
+                const Vec3 here = output.current()[s];
                 for (int i = 0; i < output.prediction_count(s); ++i) {
-                    sum += (output.position(own[i].sample, own[i].group) - own[i].offset) * own[i].weight;
+                    sum += (here + own[i].displacement) * own[i].weight;
                     weight += own[i].weight;
                 }
                 // The pairs of the neighbours' matches that hold s: where they put s (Eq. 7's
@@ -175,13 +182,11 @@ void assign_frame(OutputFrames& output, const Domain& domain, double radius, int
                     const Prediction* theirs = output.predictions(o);
                     for (int t = 0; t < output.prediction_count(o); ++t)
                         if (theirs[t].sample == s && theirs[t].group == 0) {
-                            sum += (output.current()[o] + theirs[t].offset) * theirs[t].weight;
+                            sum += (here - theirs[t].displacement) * theirs[t].weight;
                             weight += theirs[t].weight;
                         }
                 });
-                Vec3 p = weight > 0.0 ? sum / weight : output.current()[s];
-                if (!domain.inside(p)) p = domain.closest_inside(p);
-                next[s] = p;
+                next[s] = weight > 0.0 ? sum / weight : output.current()[s];
             }
         },
         16);

@@ -34,9 +34,9 @@ double search_frame(const InputFrames& input, OutputFrames& output, const StPara
                     const SearchSettings& settings, std::vector<SearchScratch>& scratch, int threads);
 
 // The Jacobi assignment: each sample moves to the weighted mean of its predictions, the
-// others held where they are; then into the domain (closest point inside).
+// others held where they are (the caller then keeps it in the domain).
 // `radius`: the output neighbourhood radius (whose neighbours' pairs may hold the sample).
-void assign_frame(OutputFrames& output, const Domain& domain, double radius, int threads);
+void assign_frame(OutputFrames& output, double radius, int threads);
 
 // k-coherence sets: for every input sample-frame, the k most similar among `scan` input
 // sample-frames of its type drawn at random (keyed by the seed and the id), other samples

@@ -5,13 +5,14 @@
 
 namespace tessera::dynamic {
 
-OutputFrames::OutputFrames(int dimension, std::vector<int> sample_types, int matches, const StParams& params)
-    : params_(params), matches_(matches), type_(std::move(sample_types)) {
+OutputFrames::OutputFrames(int dimension, std::vector<int> sample_types, int matches, const StParams& params,
+                           Periodic periodic)
+    : params_(params), matches_(matches), type_(std::move(sample_types)), periodic_(periodic) {
     params_.dimension = dimension;
     const size_t n = type_.size();
     current_.assign(n, Vec3{});
     current_shift_.assign(n, Vec3{});
-    advanced_.assign(params.temporal, {});
+    images_.assign(params.temporal, {});
     grids_.resize(params.temporal);
     match_.assign(n * matches, -1);
     distance_.assign(n * matches, 0.0);
@@ -24,14 +25,46 @@ OutputFrames::OutputFrames(int dimension, std::vector<int> sample_types, int mat
     prediction_count_.assign(n, 0);
 }
 
+// The positions and, with wrap, their copies shifted by one period along each axis (and
+// each pair of axes, for the corners) wherever a copy falls within a radius of the box.
+void OutputFrames::build_images(int k, const std::vector<Vec3>& positions) {
+    Images& im = images_[k];
+    im.points = positions;
+    im.sample.resize(positions.size());
+    for (size_t s = 0; s < positions.size(); ++s) im.sample[s] = static_cast<int>(s);
+    if (periodic_.on) {
+        const int dims = params_.dimension;
+        const double r = params_.radius;
+        for (size_t s = 0; s < positions.size(); ++s) {
+            // Per axis: -1, 0 or +1 periods, the shift that brings the point near the far face.
+            int near[3] = {0, 0, 0};
+            for (int a = 0; a < dims; ++a) {
+                const double x = positions[s][a] - periodic_.lo[a];
+                if (x < r) near[a] = 1;
+                else if (x > periodic_.extent[a] - r) near[a] = -1;
+            }
+            for (int mask = 1; mask < (1 << dims); ++mask) {
+                Vec3 shift;
+                bool valid = true;
+                for (int a = 0; a < dims && valid; ++a)
+                    if (mask & (1 << a)) valid = near[a] != 0, shift[a] = near[a] * periodic_.extent[a];
+                if (!valid) continue;
+                im.points.push_back(positions[s] + shift);
+                im.sample.push_back(static_cast<int>(s));
+            }
+        }
+    }
+    grids_[k].build(im.points, params_.radius, params_.dimension);
+}
+
 void OutputFrames::index() {
-    grids_[0].build(current_, params_.radius, params_.dimension);
+    build_images(0, current_);
     if (params_.shape != NeighbourhoodShape::full) return;
     const int n = size();
+    std::vector<Vec3> advanced(n);
     for (int k = 1; k < params_.temporal && k <= frames_done_; ++k) {
-        advanced_[k].resize(n);
-        for (int s = 0; s < n; ++s) advanced_[k][s] = position(s, k);
-        grids_[k].build(advanced_[k], params_.radius, params_.dimension);
+        for (int s = 0; s < n; ++s) advanced[s] = position(s, k);
+        build_images(k, advanced);
     }
 }
 
@@ -46,10 +79,11 @@ void OutputFrames::gather(int s, StNeighbourhood& out) const {
             out.entries.push_back({d, falloff(d, k, params_), type_[s], s});
             continue;
         }
-        const std::vector<Vec3>& points = k == 0 ? current_ : advanced_[k];
-        grids_[k].for_each_within(centre, params_.radius, [&](int o, double) {
+        const Images& im = images_[k];
+        grids_[k].for_each_within(centre, params_.radius, [&](int i, double) {
+            const int o = im.sample[i];
             if (k == 0 && o == s) return;
-            const Vec3 d = points[o] - centre;
+            const Vec3 d = im.points[i] - centre;
             out.entries.push_back({d, falloff(d, k, params_), type_[o], o});
         });
         finish_group(out.entries, out.start[k]);

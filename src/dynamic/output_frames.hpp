@@ -14,15 +14,26 @@ namespace tessera::dynamic {
 // What one search leaves for the assignment: per sample, pairs (a neighbour s' in group k
 // paired with an input entry) that predict the sample's position, with their weights.
 struct Prediction {
-    int sample = -1;   // s' (its current position for k = 0, its advanced past one for k >= 1)
+    int sample = -1;   // s'
     int group = 0;     // k
-    Vec3 offset;       // the paired input entry's offset: p(s) = position(s', k) - offset
+    // Where the pair puts s, relative to where s is: (p(s') - p(s)) - (p(s'_i) - p(s_i)),
+    // the output entry's offset less its partner's (Eq. 6). The neighbour s' sees the same
+    // pair from its side as the opposite displacement. Offsets, not positions, so that a
+    // neighbour seen through the periodic border (wrap) predicts the right place.
+    Vec3 displacement;
     double weight = 0; // omega_j (Eq. 12) x the pair's falloff (Eq. 9)
+};
+
+// The periodic box of a wrapped domain: neighbourhoods see across its faces.
+struct Periodic {
+    bool on = false;
+    Vec3 lo, extent;
 };
 
 class OutputFrames {
 public:
-    OutputFrames(int dimension, std::vector<int> sample_types, int matches, const StParams& params);
+    OutputFrames(int dimension, std::vector<int> sample_types, int matches, const StParams& params,
+                 Periodic periodic = {});
 
     int size() const { return static_cast<int>(type_.size()); }
     int frame() const { return frames_done_; }   // the frame being made
@@ -46,10 +57,12 @@ public:
     void index();
     // Gathers the neighbourhood of s in the frame being made (groups: min(T, frame + 1)).
     void gather(int s, StNeighbourhood& out) const;
-    // Calls fn(s') for each sample within `radius` of s at the current frame (not s).
+    // Calls fn(s') for each sample within `radius` of s at the current frame (not s), through
+    // the periodic border too.
     template <class Fn>
     void for_each_neighbour(int s, double radius, Fn&& fn) const {
-        grids_[0].for_each_within(current_[s], radius, [&](int o, double) {
+        grids_[0].for_each_within(current_[s], radius, [&](int i, double) {
+            const int o = images_[0].sample[i];
             if (o != s) fn(o);
         });
     }
@@ -80,8 +93,16 @@ private:
     int matches_ = 1, frames_done_ = 0, prediction_stride_ = 0;
     std::vector<int> type_;
     std::vector<Vec3> current_, current_shift_, past_, past_shift_;
-    std::vector<std::vector<Vec3>> advanced_;   // per k: advanced past positions (full shape)
-    std::vector<core::SpatialGrid> grids_;      // per k
+    // Per group k: the points its grid holds (the samples' positions, advanced past ones for
+    // k >= 1, then with wrap their images within a radius beyond each face) and their samples.
+    struct Images {
+        std::vector<Vec3> points;
+        std::vector<int> sample;
+    };
+    void build_images(int k, const std::vector<Vec3>& positions);
+    Periodic periodic_;
+    std::vector<Images> images_;
+    std::vector<core::SpatialGrid> grids_;      // per k, over images_[k].points
     std::vector<int> match_, prior_match_;
     std::vector<double> distance_, omega_;
     std::vector<Prediction> predictions_;

@@ -2,6 +2,7 @@
 #include "dynamic/st_metric.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace tessera::dynamic {
 
@@ -18,37 +19,38 @@ double group_distance(const StEntry* out, int rows, const StEntry* in, int input
         if (partner) partner[0] = c < params.cap2 ? in_base : -1;
         return c < params.cap2 ? w * c : out[0].kappa * params.cap2;
     }
-    // Columns no row can pair below the cap are as good as "unpaired": left out. The sum of
-    // the row minima bounds the optimum from below, which ends hopeless candidates before
-    // the O(rows^2 x cols) pairing.
-    s.kept.clear();
+    // Row by row, the weighted pair costs (Eq. 9) and each row's cheapest: their sum bounds
+    // the optimum from below, so a hopeless candidate is refused after a row or two, before
+    // the O(rows^2 x cols) pairing. Columns no row pairs below the cap are as good as
+    // "unpaired" and are left out of the pairing.
+    s.full.resize(static_cast<size_t>(rows) * inputs);
+    std::uint64_t useful = 0;  // inputs <= max_group < 64
     double lower = 0.0;
-    s.row_min.assign(rows, 0.0);
-    for (int r = 0; r < rows; ++r) s.row_min[r] = out[r].kappa * params.cap2;
-    for (int c = 0; c < inputs; ++c) {
-        bool useful = false;
-        for (int r = 0; r < rows; ++r) {
+    for (int r = 0; r < rows; ++r) {
+        double* row = s.full.data() + static_cast<size_t>(r) * inputs;
+        const double unpaired = out[r].kappa * params.cap2;
+        double cheapest = unpaired;
+        for (int c = 0; c < inputs; ++c) {
             const double cost = pair_cost(out[r], in[c], params);
-            if (cost >= params.cap2) continue;
-            useful = true;
-            s.row_min[r] = std::min(s.row_min[r], 0.5 * (out[r].kappa + in[c].kappa) * cost);
+            const bool pairs = cost < params.cap2;
+            row[c] = pairs ? 0.5 * (out[r].kappa + in[c].kappa) * cost : unpaired;
+            useful |= std::uint64_t(pairs) << c;
+            cheapest = std::min(cheapest, row[c]);
         }
-        if (useful) s.kept.push_back(c);
+        lower += cheapest;
+        if (lower >= bound) return lower;
     }
-    for (double m : s.row_min) lower += m;
-    if (lower >= bound) return lower;
+    s.kept.clear();
+    for (int c = 0; c < inputs; ++c)
+        if (useful >> c & 1u) s.kept.push_back(c);
     const int kept = static_cast<int>(s.kept.size());
     const int cols = kept + rows;
     s.cost.resize(static_cast<size_t>(rows) * cols);
     for (int r = 0; r < rows; ++r) {
         double* row = s.cost.data() + static_cast<size_t>(r) * cols;
-        const double unpaired = out[r].kappa * params.cap2;
-        for (int k = 0; k < kept; ++k) {
-            const int c = s.kept[k];
-            const double cost = pair_cost(out[r], in[c], params);
-            row[k] = cost < params.cap2 ? 0.5 * (out[r].kappa + in[c].kappa) * cost : unpaired;
-        }
-        for (int c = kept; c < cols; ++c) row[c] = unpaired;
+        const double* full = s.full.data() + static_cast<size_t>(r) * inputs;
+        for (int k = 0; k < kept; ++k) row[k] = full[s.kept[k]];
+        std::fill(row + kept, row + cols, out[r].kappa * params.cap2);
     }
     s.column.resize(rows);
     const double total = hungarian(s.cost.data(), rows, cols, s.hungarian, s.column.data());

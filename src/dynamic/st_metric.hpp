@@ -15,9 +15,8 @@ namespace tessera::dynamic {
 
 struct MetricScratch {
     HungarianScratch hungarian;
-    std::vector<double> cost;
+    std::vector<double> cost, full;
     std::vector<int> column, kept;
-    std::vector<double> row_min;
 };
 
 // Distance between the output neighbourhood `out` (its groups only) and the input one given

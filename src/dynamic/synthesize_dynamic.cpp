@@ -56,7 +56,7 @@ StParams resolve_params(const Animation& exemplar, const DynamicOptions& options
     p.radius = options.radius > 0.0 ? options.radius : 1.5 * p.spacing;
     // A pair displaced by half a spacing is as bad as none; input entries further than that
     // beyond r can pair with nothing, so input neighbourhoods stop there.
-    const double cap = 0.5 * p.spacing;
+    const double cap = p.spacing;
     p.input_radius = p.radius + cap;
     p.cap2 = cap * cap;
     p.alpha = options.alpha >= 0.0 ? options.alpha : p.spacing * p.spacing;
@@ -149,7 +149,9 @@ AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& 
     InputFrames input(exemplar, params, options.threads);
     if (options.search == SearchMode::kcoherence)
         build_similarity(input, params, similarity_k, similarity_scan, options.seed, options.threads);
-    OutputFrames out(params.dimension, sample_types(first, exemplar.structure), options.matches, params);
+    Periodic periodic;
+    if (options.wrap) periodic = {true, domain.bounds().lo, domain.bounds().size()};
+    OutputFrames out(params.dimension, sample_types(first, exemplar.structure), options.matches, params, periodic);
     for (size_t s = 0; s < first.samples.size(); ++s) out.current()[s] = first.samples[s].p;
 
     std::vector<SearchScratch> scratch(threads);
@@ -175,7 +177,8 @@ AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& 
             settings.round = round;
             out.index();
             energy = search_frame(input, out, params, settings, scratch, options.threads);
-            assign_frame(out, domain, params.radius, options.threads);
+            assign_frame(out, params.radius, options.threads);
+            for (int s = 0; s < out.size(); ++s) keep_inside(out.current()[s], out.current_shift()[s], domain, options.wrap);
         }
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - frame_start);
