@@ -8,6 +8,10 @@ swirl_particles_2d.json   Poisson-disk particles (radius 0.5 exclusion, in 10 x 
                           space, so that neighbours swirl together: the detail motion that a
                           global flow carries past an obstacle in the demo.
 
+obstacle_channel.json     (written by hand) a polygon domain: a 30 x 15 channel with a round
+                          obstacle of radius 2.5 at (10, 7.3), for the demo's particles
+                          carried past it by a flow.
+
 Run from this folder: python3 make_examples.py (deterministic: a fixed seed).
 """
 import json
