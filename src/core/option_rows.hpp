@@ -4,13 +4,18 @@
 // [](auto& o) -> auto& { return o.radius; }: it serves the getter (const) and the setter.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "tessera/option_table.hpp"
+#include "tessera/vec.hpp"
 
 namespace tessera::options {
 
@@ -118,5 +123,30 @@ inline const char* const field_doc =
     "trefoil:CX,CY,CZ,SCALE (3D). The exemplar's +x axis follows the field. From files (docs/fields.md): "
     "grid:FILE.json (vectors at grid nodes, interpolated) or mesh:FILE.ply|FILE.obj (3D, a direction per "
     "vertex). Default: none (the exemplar's frame everywhere).";
+
+// The vector text of text options (det's --gravity X,Y[,Z], dynamic's --flow): 2 or 3 finite
+// numbers separated by commas; nullopt when `text` is not that.
+inline std::optional<Vec3> parse_vector_components(const std::string& text) {
+    Vec3 v;
+    int count = 0;
+    const char* p = text.c_str();
+    while (*p && count < 3) {
+        char* end = nullptr;
+        v[count++] = std::strtod(p, &end);
+        if (end == p || (*end != ',' && *end != '\0') || !std::isfinite(v[count - 1])) return std::nullopt;
+        p = *end == ',' ? end + 1 : end;
+    }
+    if (*p != '\0' || count < 2) return std::nullopt;
+    return v;
+}
+
+// A vector as text that parse_vector_components reads back exactly; "" for the zero vector
+// (the options' "unset").
+inline std::string vector_text(const Vec3& v) {
+    if (v == Vec3{}) return "";
+    char text[96];
+    std::snprintf(text, sizeof text, "%.17g,%.17g,%.17g", v[0], v[1], v[2]);
+    return text;
+}
 
 }  // namespace tessera::options

@@ -20,27 +20,12 @@ using O = DetOptions;
 // Gravity as an axis with its sign ("-z") or as its components ("0,0,-1").
 Vec3 parse_gravity(const std::string& text, const std::string& as_written) {
     if (text.find(',') == std::string::npos) return parse_axis_direction(text, as_written);
-    Vec3 v;
-    int count = 0;
-    const char* p = text.c_str();
-    while (*p && count < 3) {
-        char* end = nullptr;
-        v[count++] = std::strtod(p, &end);
-        if (end == p || (*end != ',' && *end != '\0')) break;
-        p = *end == ',' ? end + 1 : end;
-    }
-    if (*p != '\0' || count < 2)
-        throw Error(ErrorKind::option, as_written + " must be an axis with its sign (-x, +x, -y, +y, -z, +z) or "
-                                                    "a vector X,Y[,Z], got '" + text + "'");
-    return v;
+    if (const std::optional<Vec3> v = parse_vector_components(text)) return *v;
+    throw Error(ErrorKind::option, as_written + " must be an axis with its sign (-x, +x, -y, +y, -z, +z) or "
+                                                "a vector X,Y[,Z], got '" + text + "'");
 }
 
-std::string gravity_text(const O& o) {
-    if (o.gravity == Vec3{}) return "";
-    char text[96];
-    std::snprintf(text, sizeof text, "%.17g,%.17g,%.17g", o.gravity[0], o.gravity[1], o.gravity[2]);
-    return text;
-}
+std::string gravity_text(const O& o) { return vector_text(o.gravity); }
 
 std::string boundary_text(const O& o) {
     std::string text;

@@ -116,48 +116,10 @@ double match_hungarian(const NeighborEntry* out, int m, const NeighborEntry* in,
             }
             s.matrix[static_cast<size_t>(o) * cols + c] = v;
         }
-    // 1-based arrays as in the classic formulation; p[c] = row assigned to column c.
-    s.u.assign(m + 1, 0.0);
-    s.v.assign(cols + 1, 0.0);
-    s.p.assign(cols + 1, 0);
-    s.way.assign(cols + 1, 0);
-    for (int row = 1; row <= m; ++row) {
-        s.p[0] = row;
-        int c0 = 0;
-        s.way_cost.assign(cols + 1, inf);
-        s.used.assign(cols + 1, 0);
-        do {
-            s.used[c0] = 1;
-            const int r0 = s.p[c0];
-            double delta = inf;
-            int c1 = 0;
-            for (int c = 1; c <= cols; ++c) {
-                if (s.used[c]) continue;
-                const double cur = s.matrix[static_cast<size_t>(r0 - 1) * cols + (c - 1)] - s.u[r0] - s.v[c];
-                if (cur < s.way_cost[c]) s.way_cost[c] = cur, s.way[c] = c0;
-                if (s.way_cost[c] < delta) delta = s.way_cost[c], c1 = c;
-            }
-            for (int c = 0; c <= cols; ++c) {
-                if (s.used[c]) s.u[s.p[c]] += delta, s.v[c] -= delta;
-                else s.way_cost[c] -= delta;
-            }
-            c0 = c1;
-        } while (s.p[c0] != 0);
-        do {
-            const int c1 = s.way[c0];
-            s.p[c0] = s.p[c1];
-            c0 = c1;
-        } while (c0);
-    }
-    double total = 0.0;
+    s.column.resize(m);
+    const double total = core::hungarian(s.matrix.data(), m, cols, s.hungarian, s.column.data());
     if (partner)
-        for (int o = 0; o < m; ++o) partner[o] = -1;
-    for (int c = 1; c <= cols; ++c) {
-        const int row = s.p[c];
-        if (row == 0) continue;
-        total += s.matrix[static_cast<size_t>(row - 1) * cols + (c - 1)];
-        if (partner && c <= n) partner[row - 1] = c - 1;
-    }
+        for (int o = 0; o < m; ++o) partner[o] = s.column[o] < n ? s.column[o] : -1;
     return total;
 }
 

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/hungarian.hpp"
 #include "det/model.hpp"
 
 namespace tessera::det {
@@ -22,9 +23,9 @@ struct MatchScratch {
     std::vector<int> best_input;    // greedy: its input partner
     std::vector<char> taken;        // greedy: input entries already paired
     std::vector<int> range_lo, range_hi;  // greedy: input entries sharing each output entry's match key
-    std::vector<double> matrix, u, v, way_cost;  // Hungarian
-    std::vector<int> p, way;
-    std::vector<char> used;
+    std::vector<double> matrix;  // Hungarian
+    std::vector<int> column;
+    core::HungarianScratch hungarian;
 };
 
 // Cost of pairing output neighbour o with input neighbour i (without the cap).

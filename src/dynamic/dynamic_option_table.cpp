@@ -1,9 +1,6 @@
 // The options of dynamic synthesis (DynamicOptions, tessera/dynamic.hpp), one row each:
 // `tessera synth --method dynamic` makes its flags from this table and Python's
 // synthesize(method="dynamic") its keywords (tessera/option_table.hpp).
-#include <cstdio>
-#include <cstdlib>
-
 #include "core/option_rows.hpp"
 #include "dynamic/st_neighbourhood.hpp"
 #include "tessera/dynamic.hpp"
@@ -17,30 +14,9 @@ namespace {
 using namespace options;
 using O = DynamicOptions;
 
-// "X,Y" or "X,Y,Z": a vector of 2 or 3 finite numbers.
-Vec3 parse_vector(const std::string& text, const std::string& as_written) {
-    Vec3 v;
-    int count = 0;
-    const char* p = text.c_str();
-    while (*p && count < 3) {
-        char* end = nullptr;
-        v[count++] = std::strtod(p, &end);
-        if (end == p || (*end != ',' && *end != '\0') || !std::isfinite(v[count - 1])) {
-            count = 0;
-            break;
-        }
-        p = *end == ',' ? end + 1 : end;
-    }
-    if (*p != '\0' || count < 2)
-        throw Error(ErrorKind::option, as_written + " must be a vector X,Y or X,Y,Z of finite numbers, got '" + text + "'");
-    return v;
-}
-
-std::string vector_text(const Vec3& v) {
-    if (v == Vec3{}) return "";
-    char text[96];
-    std::snprintf(text, sizeof text, "%.17g,%.17g,%.17g", v[0], v[1], v[2]);
-    return text;
+Vec3 parse_flow(const std::string& text, const std::string& as_written) {
+    if (const std::optional<Vec3> v = parse_vector_components(text)) return *v;
+    throw Error(ErrorKind::option, as_written + " must be a vector X,Y or X,Y,Z of finite numbers, got '" + text + "'");
 }
 
 void add_neighbourhood_rows(OptionTable<O>& t) {
@@ -88,7 +64,7 @@ void add_solver_rows(OptionTable<O>& t) {
         "flow", "Global flow X,Y[,Z] in units per unit of time, added to every element's motion; unset = none.",
         [](const O& o) { return vector_text(o.flow); },
         [](O& o, const std::string& text, const OptionContext& c) {
-            o.flow = text.empty() ? Vec3{} : parse_vector(text, c.as_written);
+            o.flow = text.empty() ? Vec3{} : parse_flow(text, c.as_written);
         }));
     t.push_back(flag_row<O>("wrap",
                             "An element carried out of the domain re-enters on the opposite side of its bounding "

@@ -53,7 +53,7 @@ double group_distance(const StEntry* out, int rows, const StEntry* in, int input
         std::fill(row + kept, row + cols, out[r].kappa * params.cap2);
     }
     s.column.resize(rows);
-    const double total = hungarian(s.cost.data(), rows, cols, s.hungarian, s.column.data());
+    const double total = core::hungarian(s.cost.data(), rows, cols, s.hungarian, s.column.data());
     if (partner)
         for (int r = 0; r < rows; ++r) {
             const int k = s.column[r];

@@ -8,13 +8,13 @@
 
 #include <vector>
 
-#include "dynamic/hungarian.hpp"
+#include "core/hungarian.hpp"
 #include "dynamic/st_neighbourhood.hpp"
 
 namespace tessera::dynamic {
 
 struct MetricScratch {
-    HungarianScratch hungarian;
+    core::HungarianScratch hungarian;
     std::vector<double> cost, full;
     std::vector<int> column, kept;
 };

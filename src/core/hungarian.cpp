@@ -1,12 +1,12 @@
-// dynamic/hungarian.cpp — the assignment problem by shortest augmenting paths with
+// core/hungarian.cpp — the assignment problem by shortest augmenting paths with
 // potentials (Kuhn 1955; the form with one Dijkstra-like sweep per row). Index 0 of the
 // column arrays is a virtual column that holds the row being inserted.
-#include "dynamic/hungarian.hpp"
+#include "core/hungarian.hpp"
 
 #include <algorithm>
 #include <limits>
 
-namespace tessera::dynamic {
+namespace tessera::core {
 
 namespace {
 
@@ -73,4 +73,4 @@ double hungarian(const double* cost, int rows, int cols, HungarianScratch& scrat
     return total;
 }
 
-}  // namespace tessera::dynamic
+}  // namespace tessera::core

@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "core/rng.hpp"
-#include "dynamic/hungarian.hpp"
+#include "core/hungarian.hpp"
 
 namespace {
 
-using tessera::dynamic::hungarian;
-using tessera::dynamic::HungarianScratch;
+using tessera::core::hungarian;
+using tessera::core::HungarianScratch;
 
 // Minimum over all ways to give each row its own column (columns permuted, first `rows` used).
 double brute_force(const std::vector<double>& cost, int rows, int cols) {
