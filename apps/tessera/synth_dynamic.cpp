@@ -33,7 +33,7 @@ void write_animation(const tessera::AnimatedArrangement& result, const std::stri
 }  // namespace
 
 void check_dynamic_outputs(const DynamicRun& run) {
-    check_output_path(run.output, "-o", {".json", ".csv", ".png"});
+    check_output_path(run.output, "-o", {".json", ".csv", ".usda", ".png"});
     if (!run.preview.empty()) check_output_path(run.preview, "--preview", {".png"});
 }
 

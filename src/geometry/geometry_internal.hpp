@@ -67,5 +67,9 @@ std::string to_obj(const Scene& scene);
 std::string to_mesh_ply(const Scene& scene);
 std::string to_gltf(const Scene& scene, bool binary, GltfInstancing instancing);
 std::string to_usda(const Scene& scene);
+// An animation's scenes (the same instances in every frame) as one layer whose poses are
+// time samples, one per frame (time code = frame index, played at frames_per_second).
+// Error(input) for elements that are not instanced (deformed meshes).
+std::string to_usda_animated(const std::vector<Scene>& frames, double frames_per_second);
 
 }  // namespace tessera::geometry

@@ -90,10 +90,39 @@ std::vector<Prototype> prototypes_of(const Scene& scene) {
     return out;
 }
 
-std::string point_instancer(const Scene& scene, const std::vector<Prototype>& prototypes) {
+// The instances' poses of one scene as USD array texts: positions, orientations (quath and
+// quatf share the text).
+struct InstancePoses {
+    std::vector<std::string> positions, orientations;
+};
+
+InstancePoses poses_of(const Scene& scene) {
+    InstancePoses p;
+    for (const SceneInstance& inst : scene.instances) {
+        if (!inst.instanced) continue;
+        const Quat& q = inst.orientation;
+        p.orientations.push_back("(" + real(q.w) + ", " + real(q.x) + ", " + real(q.y) + ", " + real(q.z) + ")");
+        p.positions.push_back(tuple(inst.position));
+    }
+    return p;
+}
+
+// `name = [...]` for a still scene, `name.timeSamples = {t: [...], ...}` for an animation
+// (USD's time samples: the value of the attribute at each time code, here the frame index).
+std::string attribute(const std::string& type_and_name, const std::vector<std::vector<std::string>>& per_frame,
+                      int depth) {
+    if (per_frame.size() == 1) return pad(depth) + type_and_name + " = " + list(per_frame[0]) + "\n";
+    std::string out = pad(depth) + type_and_name + ".timeSamples = {\n";
+    for (size_t f = 0; f < per_frame.size(); ++f)
+        out += pad(depth + 1) + std::to_string(f) + ": " + list(per_frame[f]) + ",\n";
+    return out + pad(depth) + "}\n";
+}
+
+std::string point_instancer(const Scene& scene, const std::vector<Prototype>& prototypes,
+                            const std::vector<Scene>& frames) {
     std::vector<int> proto_index(scene.meshes.size(), -1);
     for (size_t p = 0; p < prototypes.size(); ++p) proto_index[prototypes[p].mesh] = static_cast<int>(p);
-    std::vector<std::string> ids, quath, quatf, positions, classes, protos, scales;
+    std::vector<std::string> ids, quath, positions, classes, protos, scales;
     std::vector<std::vector<std::string>> attributes(scene.attribute_names.size());
     for (const SceneInstance& inst : scene.instances) {
         if (!inst.instanced) continue;
@@ -102,7 +131,6 @@ std::string point_instancer(const Scene& scene, const std::vector<Prototype>& pr
             "(" + real(q.w) + ", " + real(q.x) + ", " + real(q.y) + ", " + real(q.z) + ")";
         ids.push_back(std::to_string(inst.id));
         quath.push_back(wxyz);
-        quatf.push_back(wxyz);
         positions.push_back(tuple(inst.position));
         classes.push_back(std::to_string(inst.type));
         protos.push_back(std::to_string(proto_index.at(static_cast<size_t>(inst.mesh))));
@@ -114,12 +142,22 @@ std::string point_instancer(const Scene& scene, const std::vector<Prototype>& pr
     for (const std::string& name : scene.type_names) class_names.push_back(quoted(name));
     for (const Prototype& p : prototypes) targets.push_back("</World/Elements/Prototypes/" + p.name + ">");
 
+    // An animation's poses: one set per frame (the first scene's when there are no frames).
+    std::vector<std::vector<std::string>> frame_positions{positions}, frame_orientations{quath};
+    if (frames.size() > 1) {
+        frame_positions.clear(), frame_orientations.clear();
+        for (const Scene& frame : frames) {
+            InstancePoses p = poses_of(frame);
+            frame_positions.push_back(std::move(p.positions));
+            frame_orientations.push_back(std::move(p.orientations));
+        }
+    }
     const std::string in = pad(2), per_instance = " (interpolation = \"vertex\")\n";
     std::string out = pad(1) + "def PointInstancer \"Elements\"\n" + pad(1) + "{\n";
     out += in + "int64[] ids = " + list(ids) + "\n";
-    out += in + "quath[] orientations = " + list(quath) + "\n";
-    out += in + "quatf[] orientationsf = " + list(quatf) + "\n";
-    out += in + "point3f[] positions = " + list(positions) + "\n";
+    out += attribute("quath[] orientations", frame_orientations, 2);
+    out += attribute("quatf[] orientationsf", frame_orientations, 2);
+    out += attribute("point3f[] positions", frame_positions, 2);
     out += in + "int[] primvars:tessera:class = " + list(classes) + per_instance;
     out += in + "string[] primvars:tessera:classNames = " + list(class_names) +
            " (interpolation = \"constant\")\n";
@@ -153,7 +191,9 @@ std::string own_meshes(const Scene& scene) {
 
 }  // namespace
 
-std::string to_usda(const Scene& scene) {
+namespace {
+
+std::string usda_layer(const Scene& scene, const std::vector<Scene>& frames, double frames_per_second) {
     size_t instanced = 0;
     for (const SceneInstance& inst : scene.instances) {
         instanced += inst.instanced ? 1 : 0;
@@ -166,14 +206,34 @@ std::string to_usda(const Scene& scene) {
     out += "    defaultPrim = \"World\"\n";
     out += "    doc = " +
            quoted(std::string("tessera ") + version + ": " + std::to_string(scene.instances.size()) +
-                  " elements, dimension " + std::to_string(scene.dimension)) +
+                  " elements, dimension " + std::to_string(scene.dimension) +
+                  (frames.size() > 1 ? ", " + std::to_string(frames.size()) + " frames" : std::string())) +
            "\n";
+    if (frames.size() > 1) {
+        out += "    endTimeCode = " + std::to_string(frames.size() - 1) + "\n";
+        out += "    startTimeCode = 0\n";
+        out += "    timeCodesPerSecond = " + real(frames_per_second) + "\n";
+    }
     out += "    metersPerUnit = 1\n";
     out += "    upAxis = \"Z\"\n)\n\n";
     out += "def Xform \"World\"\n{\n";
-    if (instanced > 0) out += point_instancer(scene, prototypes_of(scene));
+    if (instanced > 0) out += point_instancer(scene, prototypes_of(scene), frames);
     if (instanced < scene.instances.size()) out += (instanced > 0 ? "\n" : "") + own_meshes(scene);
     return out + "}\n";
+}
+
+}  // namespace
+
+std::string to_usda(const Scene& scene) { return usda_layer(scene, {}, 0.0); }
+
+std::string to_usda_animated(const std::vector<Scene>& frames, double frames_per_second) {
+    if (frames.empty()) throw Error(ErrorKind::internal, "to_usda_animated: no frame");
+    for (const Scene& f : frames)
+        for (const SceneInstance& inst : f.instances)
+            if (!inst.instanced)
+                throw Error(ErrorKind::input, "an animated USD layer holds instanced elements only (rigid types and "
+                                              "particles); write deformed elements' frames as .json or .csv");
+    return usda_layer(frames[0], frames, frames_per_second);
 }
 
 }  // namespace tessera::geometry

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "geometry/geometry_internal.hpp"
 #include "io/io_util.hpp"
 #include "tessera/animation_io.hpp"
 #include "tessera/error.hpp"
@@ -33,6 +34,15 @@ void write_csv(const Animation& data, const RunStats*, const std::string& path, 
     write_file_atomic(path, animation_to_csv(data));
 }
 
+// A USD layer whose instancer poses are time samples, one per frame (docs/format.md, "USD").
+void write_usda(const Animation& data, const RunStats*, const std::string& path, const SaveOptions& options) {
+    std::vector<Scene> frames;
+    for (int f = 0; f < data.frame_count(); ++f) frames.push_back(build_scene(data.frame(f), options.geometry));
+    const int n = data.frame_count();
+    const double fps = n > 1 ? (n - 1) / (data.times.back() - data.times.front()) : 24.0;
+    write_file_atomic(path, geometry::to_usda_animated(frames, fps));
+}
+
 // The formats save_animation writes, by extension (lower case): one line per format.
 struct AnimationFormat {
     const char* extension;
@@ -41,6 +51,7 @@ struct AnimationFormat {
 constexpr AnimationFormat animation_formats[] = {
     {".json", write_json},
     {".csv", write_csv},
+    {".usda", write_usda},
 };
 
 void save_by_extension(const Animation& data, const RunStats* stats, const std::string& path,

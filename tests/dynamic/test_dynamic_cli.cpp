@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_fixture.hpp"
+#include "geometry/usda_text.hpp"
 #include "tessera/animation_io.hpp"
 
 namespace tessera_cli_test {
@@ -36,6 +37,24 @@ TEST_F(DynamicCli, PngOutputAndPreviewAreAnimatedPngs) {
     const Result still = run("render '" + lattice() + "' -o '" + path("still.png") + "' --frame -1 --trail 0 -q");
     ASSERT_EQ(still.code, 0) << still.err;
     EXPECT_EQ(read_text(path("still.png")).find("acTL"), std::string::npos);
+}
+
+TEST_F(DynamicCli, UsdOutputAnimatesTheInstancerWithOneTimeSamplePerFrame) {
+    const Result r = run("synth '" + lattice() + "' -o '" + path("out.usda") + "' --frames 5 --scale 1.2 -q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string usda = read_text(path("out.usda"));
+    EXPECT_NE(usda.find("startTimeCode = 0"), std::string::npos);
+    EXPECT_NE(usda.find("endTimeCode = 4"), std::string::npos);
+    EXPECT_NE(usda.find("timeCodesPerSecond = 10"), std::string::npos);  // frames 0.1 apart
+    const size_t samples = usda.find("point3f[] positions.timeSamples = {");
+    ASSERT_NE(samples, std::string::npos);
+    for (int f = 0; f < 5; ++f) EXPECT_NE(usda.find("\n            " + std::to_string(f) + ": [(", samples), std::string::npos) << f;
+    EXPECT_EQ(usda.find("\n            5: [(", samples), std::string::npos);
+    EXPECT_NE(usda.find("quath[] orientations.timeSamples"), std::string::npos);
+    // Frame 0's positions are the JSON output's frame 0 (same run, same seed).
+    ASSERT_EQ(run("synth '" + lattice() + "' -o '" + path("out.json") + "' --frames 5 --scale 1.2 -q").code, 0);
+    const tessera::Animation a = tessera::load_animation(path("out.json"));
+    EXPECT_NE(usda.find("0: [(" + tessera::geometry::usda::real(a.at(0, 0).x)), std::string::npos);
 }
 
 TEST_F(DynamicCli, BadOptionsNameTheFlagAndWriteNothing) {
