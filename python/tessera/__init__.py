@@ -112,7 +112,8 @@ def load_animation(path, input_domain=None):
 
 def save_animation(animation, path):
     """Write an Animation, chosen by the extension of path, atomically: .json (with the run
-    statistics of an AnimatedArrangement), .csv (one row per sample per frame), or .png: an
+    statistics of an AnimatedArrangement), .csv (one row per sample per frame), .usda (a USD
+    layer whose instancer poses are time samples, one per frame), or .png: an
     animated PNG with each particle's path over the last 6 frames drawn behind it (as
     `tessera synth -o clip.png` writes it)."""
     if not isinstance(animation, Animation):
