@@ -32,8 +32,9 @@ struct RenderOptions {
     // tile borders of a world, docs/worlds.md): in 2D the lines, in 3D the edges of every
     // grid cell. 0 = none; at most 4096 cells along an axis.
     double grid = 0.0;
-    // 2D: the region the picture shows, instead of the domain's bounds grown to every element
-    // (the frames of an animation share one view, so that they have one size). Unset = that.
+    // The region the picture shows, instead of the domain's bounds grown to every element (the
+    // frames of an animation share one view, so that they have one size; in 3D the view is
+    // fitted to this box). Unset = that.
     std::optional<Box> view = {};
 };
 

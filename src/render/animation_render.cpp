@@ -73,7 +73,8 @@ RenderOptions path_picture(const Animation& a, const AnimationRenderOptions& opt
     if (!r.view) {
         Box view = a.structure.domain.bounds();
         for (const Vec3& p : a.positions)
-            for (int k = 0; k < 2; ++k) view.lo[k] = std::min(view.lo[k], p[k]), view.hi[k] = std::max(view.hi[k], p[k]);
+            for (int k = 0; k < a.structure.dimension; ++k)
+                view.lo[k] = std::min(view.lo[k], p[k]), view.hi[k] = std::max(view.hi[k], p[k]);
         r.view = view;
     }
     return r;

@@ -69,8 +69,12 @@ Frame3D make_frame_3d(const Exemplar& data, const std::vector<Sphere>& spheres, 
         y0 = std::min(y0, view.sy(p) - r), y1 = std::max(y1, view.sy(p) + r);
         near = std::max(near, view.depth(p) + r), far = std::min(far, view.depth(p) - r);
     };
-    for (const auto& [a, b] : box_edges(data.domain.bounds())) include(a, 0.0), include(b, 0.0);
-    for (const auto& s : spheres) include(s.center, s.radius);
+    if (options.view) {  // a fixed view (the frames of an animation): its box alone
+        for (const auto& [a, b] : box_edges(*options.view)) include(a, 0.0), include(b, 0.0);
+    } else {
+        for (const auto& [a, b] : box_edges(data.domain.bounds())) include(a, 0.0), include(b, 0.0);
+        for (const auto& s : spheres) include(s.center, s.radius);
+    }
     const double margin = margin_fraction * std::max(x1 - x0, y1 - y0);
     Frame3D f;
     f.x0 = x0 - margin;

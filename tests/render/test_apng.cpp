@@ -70,6 +70,21 @@ TEST(Apng, FramesChunksAndSequenceFollowTheSpecification) {
     stbi_image_free(pixels);
 }
 
+TEST(Apng, ThreeDimensionalFramesShareOneView) {
+    // Elements moving toward the viewer change the picture's framing unless the frames
+    // share one view; the APNG then needs every frame at the same size.
+    tessera::Animation a = dynamic_test::drifting_lattice(4, 4, 4, {0, 0, 0}, 0.0);
+    a.structure.dimension = 3;
+    a.structure.domain = tessera::Domain::box({-0.5, -0.5, -0.5}, {4.5, 4, 0.5}, 3);
+    for (int f = 0; f < a.frame_count(); ++f)
+        for (int s = 0; s < a.sample_count(); ++s) a.at(f, s).z = 0.4 * f;
+    tessera::AnimationRenderOptions options;
+    options.picture.width = 100;
+    const std::vector<Chunk> cs = chunks(tessera::render_animation_png(a, options));
+    ASSERT_GE(cs.size(), 2u);
+    EXPECT_EQ(u32(cs[1].data, 0), 4u);
+}
+
 TEST(Apng, TrailsShowTheMotionBehindEachParticle) {
     const tessera::Animation a = dynamic_test::drifting_lattice(5, 5, 6, {0.1, 0, 0}, 0.05);
     tessera::AnimationRenderOptions plain;
