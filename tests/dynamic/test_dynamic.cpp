@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rng.hpp"
 #include "dynamic/dynamic_fixtures.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -68,6 +69,39 @@ TEST(Dynamic, SteadyMotionKeepsVelocityAndArrangementFrameByFrame) {
         EXPECT_GT(mean_psi6(frame), 0.6) << "frame " << f;
         for (const Sample& s : frame.samples) EXPECT_TRUE(output_box.inside(s.p));
     }
+}
+
+TEST(Dynamic, ThreeDimensionalParticlesKeepTheirMotionAndSpacing) {
+    // A jittered cubic lattice (spacing 1) drifting at (0.05, 0, 0.02) per frame.
+    Exemplar ex;
+    ex.dimension = 3;
+    const int type = ex.type_index("ball");
+    const core::KeyedRng rng(5, core::Purpose::test);
+    std::uint64_t c = 0;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+            for (int k = 0; k < 5; ++k) {
+                const double jx = rng.uniform(c++), jy = rng.uniform(c++), jz = rng.uniform(c++);
+                ex.add_element(type, {{i + 0.1 * (jx - 0.5), j + 0.1 * (jy - 0.5), k + 0.1 * (jz - 0.5)}});
+            }
+    for (size_t e = 0; e < ex.elements.size(); ++e) ex.elements[e].id = e;
+    ex.domain = Domain::box({-0.5, -0.5, -0.5}, {4.5, 4.5, 4.5}, 3);
+    Animation a = animation_from_exemplar(ex);
+    a.times = {};
+    a.positions = {};
+    for (int f = 0; f < 8; ++f) {
+        std::vector<Vec3> p;
+        for (const Sample& s : ex.samples) p.push_back(s.p + Vec3{0.05, 0, 0.02} * f);
+        a.add_frame(0.1 * f, p);
+    }
+    DynamicOptions o;
+    o.frames = 6;
+    const Domain box = Domain::box({-0.5, -0.5, -0.5}, {7.5, 7.5, 7.5}, 3);
+    const AnimatedArrangement out = synthesize_dynamic(a, box, o);
+    const MotionStats got = motion_stats(out, 1, out.frame_count());
+    EXPECT_NEAR(got.mean.x, 0.05, 0.005);
+    EXPECT_NEAR(got.mean.z, 0.02, 0.005);
+    for (int f : {1, 5}) EXPECT_GT(closest_pair(out.frame(f)), 0.6 * closest_pair(ex)) << "frame " << f;
 }
 
 TEST(Dynamic, CausalNeighbourhoodsNeverReadFutureFrames) {
