@@ -36,6 +36,10 @@ struct RenderOptions {
     // frames of an animation share one view, so that they have one size; in 3D the view is
     // fitted to this box). Unset = that.
     std::optional<Box> view = {};
+    // The spacing that sizes elements without a radius (disks of 0.4 x it) and polylines; 0 =
+    // the data's mean nearest-neighbour distance. Fixed for the frames of an animation, whose
+    // trails would otherwise count as neighbours.
+    double spacing = 0.0;
 };
 
 // An sRGB colour, 8 bits per component.

@@ -9,6 +9,7 @@
 
 #include "render/apng.hpp"
 #include "tessera/error.hpp"
+#include "tessera/metrics.hpp"
 
 namespace tessera {
 
@@ -70,6 +71,7 @@ Exemplar frame_with_paths(const Animation& a, int frame, int length) {
 RenderOptions path_picture(const Animation& a, const AnimationRenderOptions& options) {
     RenderOptions r = options.picture;
     r.show_samples = false;
+    if (!(r.spacing > 0.0) && a.structure.elements.size() >= 2) r.spacing = nearest_neighbor_distances(a.frame(0)).mean;
     if (!r.view) {
         Box view = a.structure.domain.bounds();
         for (const Vec3& p : a.positions)

@@ -81,7 +81,7 @@ void draw_domain_outline(Canvas& canvas, const Frame2D& f, const Domain& domain)
 }
 
 std::string render_png_2d(const Exemplar& data, const RenderOptions& options) {
-    const Style style = make_style(data);
+    const Style style = make_style(data, options);
     const Frame2D frame = make_frame_2d(data, style, options);
     const std::vector<Rgb> colors = class_colors(data);
     const Legend legend = make_legend(data, colors, frame.width, options);

@@ -56,7 +56,7 @@ void draw_sphere(HiResBuffer& buf, const View3D& view, const Frame3D& frame, dou
 }  // namespace
 
 std::string render_png_3d(const Exemplar& data, const RenderOptions& options) {
-    const Style style = make_style(data);
+    const Style style = make_style(data, options);
     const View3D view = View3D::standard();
     const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples);
     const Frame3D frame = make_frame_3d(data, spheres, view, options);

@@ -87,7 +87,7 @@ std::string render_scene_3d(const Exemplar& data, const Scene& scene, const Rend
 }
 
 std::string render_scene_2d(const Exemplar& data, const Scene& scene, const RenderOptions& options) {
-    const Frame2D frame = make_frame_2d(data, make_style(data), options);
+    const Frame2D frame = make_frame_2d(data, make_style(data, options), options);
     const std::vector<Rgb> colors = scene_colors(data, scene);
     const Legend legend = make_legend(data, colors, frame.width, options);
     check_picture_size(frame.width, frame.height + static_cast<int>(legend.height));

@@ -11,10 +11,10 @@
 
 namespace tessera::render {
 
-Style make_style(const Exemplar& data) {
+Style make_style(const Exemplar& data, const RenderOptions& options) {
     Style s;
-    double spacing = 0.0;
-    if (data.elements.size() >= 2) spacing = nearest_neighbor_distances(data).mean;
+    double spacing = options.spacing;
+    if (!(spacing > 0.0) && data.elements.size() >= 2) spacing = nearest_neighbor_distances(data).mean;
     if (!(spacing > 0.0)) {
         // One element, or all at one spot: size elements from the domain instead.
         const Vec3 size = data.domain.bounds().size();

@@ -24,7 +24,7 @@ struct Style {
     double radius_of(const Element& e) const { return e.radius > 0.0 ? e.radius : default_radius; }
 };
 
-Style make_style(const Exemplar& data);
+Style make_style(const Exemplar& data, const RenderOptions& options);
 
 // Throws Error(input) if the data cannot be drawn: dimension not 2 or 3, an
 // unknown type, a sample run outside the samples, a non-finite position or sample.

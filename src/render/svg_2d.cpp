@@ -63,7 +63,7 @@ void write_polyline(std::ostream& out, const SvgNumbers& num, double px_size, co
 }  // namespace
 
 std::string render_svg_2d(const Exemplar& data, const RenderOptions& options) {
-    const Style style = make_style(data);
+    const Style style = make_style(data, options);
     const Frame2D f = make_frame_2d(data, style, options);
     const double px_size = 1.0 / f.scale;  // data units per pixel
     const SvgNumbers num(px_size);

@@ -48,7 +48,7 @@ void write_gradient(std::ostream& out, int type, Rgb color, bool marker, int lev
 }  // namespace
 
 std::string render_svg_3d(const Exemplar& data, const RenderOptions& options) {
-    const Style style = make_style(data);
+    const Style style = make_style(data, options);
     const View3D view = View3D::standard();
     const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples);
     const Frame3D frame = make_frame_3d(data, spheres, view, options);

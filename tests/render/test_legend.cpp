@@ -34,7 +34,7 @@ Exemplar classes_of(const std::vector<std::string>& names, int dimension = 2) {
 render::Rgb rgb(int r, int g, int b) { return {r / 255.0f, g / 255.0f, b / 255.0f}; }
 
 render::Rgb centre_colour(const test::Image& img, const Exemplar& ex, int element, int width) {
-    const auto f = render::make_frame_2d(ex, render::make_style(ex), RenderOptions{.width = width});
+    const auto f = render::make_frame_2d(ex, render::make_style(ex, {}), RenderOptions{.width = width});
     const auto& e = ex.elements[element];
     return img.at(static_cast<int>(f.px(e.position.x)), static_cast<int>(f.py(e.position.y)));
 }

@@ -26,7 +26,7 @@ Exemplar two_disks() {
 }
 
 render::Frame2D frame_of(const Exemplar& ex, int width) {
-    return render::make_frame_2d(ex, render::make_style(ex), RenderOptions{.width = width});
+    return render::make_frame_2d(ex, render::make_style(ex, {}), RenderOptions{.width = width});
 }
 
 }  // namespace

@@ -227,7 +227,7 @@ TEST(RenderScene, TwoDimensionalCubeSeenFromAboveWhereThePreviewPutsTheElement) 
     s.meshes = {box_mesh({1, 1, 1})};
     s.instances = {placed(0, 0, 0, {3, 6, 0})};
     const auto img = test::decode_png(render_scene_png(ex, s, {.width = 400, .show_legend = false}));
-    const auto frame = render::make_frame_2d(ex, render::make_style(ex), RenderOptions{.width = 400});
+    const auto frame = render::make_frame_2d(ex, render::make_style(ex, {}), RenderOptions{.width = 400});
     ASSERT_EQ(img.width, frame.width);
     ASSERT_EQ(img.height, frame.height);  // the pixel scale of render_png
     double sx = 0, sy = 0;
@@ -259,7 +259,7 @@ TEST(RenderScene, TwoDimensionalRotationAboutZTurnsAnElongatedBox) {
     s.type_names = {"stick"};
     s.meshes = {box_mesh({2.5, 0.4, 0.4})};
     s.instances = {placed(0, 0, 0, {5, 5, 0})};
-    const auto frame = render::make_frame_2d(ex, render::make_style(ex), RenderOptions{.width = 300});
+    const auto frame = render::make_frame_2d(ex, render::make_style(ex, {}), RenderOptions{.width = 300});
     auto covered = [&](const test::Image& img, double x, double y) {
         return tinted(img.at(static_cast<int>(frame.px(x)), static_cast<int>(frame.py(y))));
     };
