@@ -45,6 +45,9 @@ void run_dynamic(const DynamicRun& run, StatusPrinter& status,
         load_options.input_domain = tessera::parse_box_domain(run.input_domain, "--input-domain");
     const tessera::Animation exemplar = status.step(
         "reading " + run.input, [&] { return tessera::load_animation(run.input, load_options); });
+    if (run.options.temporal_size > exemplar.frame_count())
+        fail_option("--temporal-size must be at most the exemplar's frame count (" +
+                    std::to_string(exemplar.frame_count()) + "), got " + std::to_string(run.options.temporal_size));
     const tessera::Domain domain =
         status.step("building the output domain", [&] { return domain_of(exemplar.frame(0)); });
     if (!run.quiet)

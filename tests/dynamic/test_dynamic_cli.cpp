@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_fixture.hpp"
+#include "dynamic/dynamic_fixtures.hpp"
 #include "geometry/usda_text.hpp"
 #include "tessera/animation_io.hpp"
 
@@ -55,6 +56,15 @@ TEST_F(DynamicCli, UsdOutputAnimatesTheInstancerWithOneTimeSamplePerFrame) {
     ASSERT_EQ(run("synth '" + lattice() + "' -o '" + path("out.json") + "' --frames 5 --scale 1.2 -q").code, 0);
     const tessera::Animation a = tessera::load_animation(path("out.json"));
     EXPECT_NE(usda.find("0: [(" + tessera::geometry::usda::real(a.at(0, 0).x)), std::string::npos);
+}
+
+TEST_F(DynamicCli, ATemporalWindowLongerThanTheExemplarNamesTheFlag) {
+    tessera::save_animation(dynamic_test::drifting_lattice(4, 4, 3, {0.1, 0, 0}, 0.0), path("short.json"));
+    const Result r = run("synth '" + path("short.json") + "' -o '" + path("out.json") + "' --temporal-size 5");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("tessera: error: --temporal-size must be at most the exemplar's frame count (3), got 5", 0), 0u)
+        << r.err;
+    EXPECT_EQ(work_files(), std::set<std::string>{"short.json"});
 }
 
 TEST_F(DynamicCli, BadOptionsNameTheFlagAndWriteNothing) {
