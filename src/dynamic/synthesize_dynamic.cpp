@@ -127,8 +127,72 @@ void advect(const InputFrames& input, OutputFrames& out, const Vec3& flow_step, 
     }
 }
 
-double frame_step(const Animation& exemplar, int frame, double dt) {
-    return exemplar.times.front() + frame * dt;
+// One run: the input index, the output's frames and the search's buffers, made once.
+class FrameByFrame {
+public:
+    FrameByFrame(const Animation& exemplar, const Domain& domain, const DynamicOptions& options,
+                 const StParams& params, const Arrangement& first)
+        : domain_(domain),
+          options_(options),
+          params_(params),
+          input_(exemplar, params, options.threads),
+          out_(params.dimension, sample_types(first, exemplar.structure), options.matches, params,
+               periodic_of(domain, options)),
+          scratch_(core::resolve_threads(options.threads)),
+          settings_{options.search, options.random_candidates, options.seed, 0, true} {
+        if (options.search == SearchMode::kcoherence)
+            build_similarity(input_, params, similarity_k, similarity_scan, options.seed, options.threads);
+        for (size_t s = 0; s < first.samples.size(); ++s) out_.current()[s] = first.samples[s].p;
+    }
+
+    // Frame 0, the static method's arrangement as it is: matched to the exemplar's first full
+    // window (only its spatial group), not moved. Returns the energy of the match.
+    double first_frame() {
+        out_.index();
+        const double energy = search_frame(input_, out_, params_, settings_, scratch_, options_.threads);
+        settings_.first_frame_only = false;
+        return energy;
+    }
+
+    // The next frame: advection, then the rounds of search and assignment. Returns the last
+    // search's energy.
+    double next_frame(const Vec3& flow_step) {
+        advect(input_, out_, flow_step, domain_, options_.wrap);
+        double energy = 0.0;
+        for (int round = 0; round < options_.iterations; ++round) {
+            settings_.round = round;
+            out_.index();
+            energy = search_frame(input_, out_, params_, settings_, scratch_, options_.threads);
+            assign_frame(out_, params_.radius, options_.threads);
+            for (int s = 0; s < out_.size(); ++s)
+                keep_inside(out_.current()[s], out_.current_shift()[s], domain_, options_.wrap);
+        }
+        return energy;
+    }
+
+    // The frame just made, as positions; then the next frame starts from it.
+    const std::vector<Vec3>& positions() const { return out_.current(); }
+    void commit() { out_.commit(); }
+
+private:
+    static Periodic periodic_of(const Domain& domain, const DynamicOptions& options) {
+        if (!options.wrap) return {};
+        return {true, domain.bounds().lo, domain.bounds().size()};
+    }
+
+    const Domain& domain_;
+    const DynamicOptions& options_;
+    StParams params_;
+    InputFrames input_;
+    OutputFrames out_;
+    std::vector<SearchScratch> scratch_;
+    SearchSettings settings_;
+};
+
+// The exemplar's mean frame step: the output's frames are that far apart.
+double frame_interval(const Animation& exemplar) {
+    const int n = exemplar.frame_count();
+    return n > 1 ? (exemplar.times.back() - exemplar.times.front()) / (n - 1) : 1.0;
 }
 
 }  // namespace
@@ -140,54 +204,30 @@ AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& 
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const StParams params = resolve_params(exemplar, options);
     const int frames = options.frames > 0 ? options.frames : std::max(2, exemplar.frame_count());
-    const double dt = exemplar.frame_count() > 1
-                          ? (exemplar.times.back() - exemplar.times.front()) / (exemplar.frame_count() - 1)
-                          : 1.0;
-    const int threads = core::resolve_threads(options.threads);
+    const double dt = frame_interval(exemplar);
 
-    Arrangement first = first_frame(exemplar, domain, options, core::progress_within(progress, 0.0, 0.2, "first frame"));
-    InputFrames input(exemplar, params, options.threads);
-    if (options.search == SearchMode::kcoherence)
-        build_similarity(input, params, similarity_k, similarity_scan, options.seed, options.threads);
-    Periodic periodic;
-    if (options.wrap) periodic = {true, domain.bounds().lo, domain.bounds().size()};
-    OutputFrames out(params.dimension, sample_types(first, exemplar.structure), options.matches, params, periodic);
-    for (size_t s = 0; s < first.samples.size(); ++s) out.current()[s] = first.samples[s].p;
-
-    std::vector<SearchScratch> scratch(threads);
-    SearchSettings settings{options.search, options.random_candidates, options.seed, 0, true};
+    const Arrangement first =
+        first_frame(exemplar, domain, options, core::progress_within(progress, 0.0, 0.2, "first frame"));
+    FrameByFrame run(exemplar, domain, options, params, first);
     AnimatedArrangement result;
     result.stats.method = "dynamic";
     result.stats.radius = params.radius;
     result.stats.seed = options.seed;
-    result.stats.threads = threads;
-    out.index();
-    result.stats.energy.push_back(search_frame(input, out, params, settings, scratch, options.threads));
+    result.stats.threads = core::resolve_threads(options.threads);
     result.structure = static_cast<const Exemplar&>(first);
-    result.add_frame(frame_step(exemplar, 0, dt), out.current());
-    out.commit();
-    settings.first_frame_only = false;
-    const Vec3 flow_step = options.flow * dt;
+    result.stats.energy.push_back(run.first_frame());
+    result.add_frame(exemplar.times.front(), run.positions());
+    run.commit();
     result.stats.init_seconds = elapsed();  // the first frame, the input index and the k-coherence sets
     for (int f = 1; f < frames; ++f) {
         const double frame_start = elapsed();
-        advect(input, out, flow_step, domain, options.wrap);
-        double energy = 0.0;
-        for (int round = 0; round < options.iterations; ++round) {
-            settings.round = round;
-            out.index();
-            energy = search_frame(input, out, params, settings, scratch, options.threads);
-            assign_frame(out, params.radius, options.threads);
-            for (int s = 0; s < out.size(); ++s) keep_inside(out.current()[s], out.current_shift()[s], domain, options.wrap);
-        }
+        const double energy = run.next_frame(options.flow * dt);
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - frame_start);
-        result.add_frame(frame_step(exemplar, f, dt), out.current());
-        out.commit();
-        if (progress) {
-            ProgressEvent e{"frame", f, frames, energy, elapsed(), 0.2 + 0.8 * (f + 1) / frames};
-            if (!progress(e)) throw Cancelled();
-        }
+        result.add_frame(exemplar.times.front() + f * dt, run.positions());
+        run.commit();
+        if (progress && !progress(ProgressEvent{"frame", f, frames, energy, elapsed(), 0.2 + 0.8 * (f + 1) / frames}))
+            throw Cancelled();
     }
     for (Sample& s : result.structure.samples) s.time = result.times.front();
     result.stats.final_energy = result.stats.energy.back();
