@@ -2,12 +2,14 @@
 // method (tessera::analyze_distribution, docs/pcf.md). Writes the model (-o model.json,
 // else stdout) and draws its PCFs (--plot FILE.svg|FILE.png). With --standard-pcf it
 // instead writes the standard pair correlation estimate (tessera::pair_correlation,
-// spatstat's convention in physical units) of every class pair as CSV.
+// spatstat's convention in physical units) of every class pair as CSV. With --decompose it
+// splits an animation into its coarse motion and details instead (analyze_decompose.hpp).
 #include <charconv>
 #include <cmath>
 #include <iostream>
 #include <memory>
 
+#include "analyze_decompose.hpp"
 #include "common.hpp"
 #include "option_flags.hpp"
 #include "status_printer.hpp"
@@ -20,15 +22,45 @@ namespace {
 
 struct AnalyzeArgs {
     std::string input, model, plot, csv, input_domain, compare;
-    bool quiet = false, standard = false;
+    bool quiet = false, standard = false, decompose = false;
     OptionFlags flags;  // PcfAnalysisSettings as flags, from the table (tessera/option_table.hpp)
     tessera::PcfAnalysisSettings settings;
     OptionFlags estimate;  // PcfOptions as flags (--standard-pcf's), from pair_correlation_option_table
     tessera::PcfOptions pcf;
+    OptionFlags low_pass;  // LowPassOptions as flags (--decompose's), from low_pass_option_table
+    tessera::LowPassOptions motion;
+    std::string detail;
     // Options that belong to one mode only, to reject them in the other (the two tables'
     // own by flags.given and estimate.given).
-    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *csv_opt = nullptr;
+    CLI::Option *model_opt = nullptr, *plot_opt = nullptr, *csv_opt = nullptr, *compare_opt = nullptr,
+                *detail_opt = nullptr, *standard_opt = nullptr;
 };
+
+// The PCF modes refuse the flags of --decompose.
+void reject_decompose_flags(const AnalyzeArgs& args) {
+    if (args.detail_opt->count() > 0) fail_option("--detail needs --decompose");
+    for (const auto& row : tessera::low_pass_option_table())
+        if (args.low_pass.given(row.name)) fail_option(tessera::cli_flag(row) + " needs --decompose");
+}
+
+// --decompose refuses the flags of the PCF modes.
+void reject_pcf_flags(const AnalyzeArgs& args) {
+    const std::string why = " cannot be used with --decompose (which splits an animation's motion)";
+    for (const CLI::Option* o : {args.standard_opt, args.plot_opt, args.csv_opt, args.compare_opt})
+        if (o->count() > 0) fail_option(o->get_name() + why);
+    for (const auto& row : tessera::pcf_analysis_option_table())
+        if (args.flags.given(row.name)) fail_option(tessera::cli_flag(row) + why);
+    for (const auto& row : tessera::pair_correlation_option_table())
+        if (args.estimate.given(row.name)) fail_option(tessera::cli_flag(row) + why);
+}
+
+void run_motion(AnalyzeArgs& args) {
+    reject_pcf_flags(args);
+    args.low_pass.apply(tessera::low_pass_option_table(), args.motion);
+    if (args.model.empty() || args.detail.empty())
+        fail_option("--decompose needs -o COARSE and --detail DETAIL (the two animations it writes)");
+    run_decompose({args.input, args.input_domain, args.model, args.detail, args.motion, args.quiet});
+}
 
 // A number as the shortest text that reads back exactly; "Inf" like R for g(0).
 std::string csv_number(double v) {
@@ -67,6 +99,7 @@ bool csv_has_class_column(const std::string& path) {
 }
 
 void run_standard(AnalyzeArgs& args) {
+    reject_decompose_flags(args);
     for (const CLI::Option* o : {args.model_opt, args.plot_opt})
         if (o->count() > 0)
             fail_option(o->get_name() + " cannot be used with --standard-pcf (which writes --csv)");
@@ -99,6 +132,7 @@ void run_standard(AnalyzeArgs& args) {
 }
 
 void run_model(AnalyzeArgs& args) {
+    reject_decompose_flags(args);
     if (args.csv_opt->count() > 0) fail_option("--csv needs --standard-pcf");
     for (const auto& row : tessera::pair_correlation_option_table())
         if (args.estimate.given(row.name)) fail_option(tessera::cli_flag(row) + " needs --standard-pcf");
@@ -156,35 +190,61 @@ Subcommand add_analyze_command(CLI::App& app) {
         "Analyse INPUT for the PCF method (Ecormier-Nocca et al. 2019): one pair correlation function per "
         "class and per dependency (types' depends_on), with envelopes of the individual PCFs. Writes the "
         "model as JSON (-o, else stdout) and draws it (--plot). With --standard-pcf, writes the standard "
-        "pair correlation g(r) of every class pair as CSV instead (docs/pcf.md).");
-    cmd->add_option("INPUT", args->input, "The exemplar (.json or .csv), 2D, one point per element.")
+        "pair correlation g(r) of every class pair as CSV instead (docs/pcf.md). With --decompose, splits an "
+        "animation into its coarse motion (-o) and details (--detail) instead (Dynamic Element Textures, "
+        "section 5; docs/dynamic.md).");
+    cmd->add_option("INPUT", args->input,
+                    "The exemplar (.json or .csv), 2D, one point per element; with --decompose, an animation "
+                    "(.json or .csv with frames).")
         ->required()
         ->type_name("FILE");
     args->model_opt = add_output_option(*cmd, args->model,
                                         "Write the model to this .json file (default: stdout, "
-                                        "unless --plot is given).",
+                                        "unless --plot is given). With --decompose: the coarse animation "
+                                        "(.json, .csv or .usda).",
                                         false);
     args->plot_opt =
         cmd->add_option("--plot", args->plot,
                         "Draw every PCF (mean line over the shaded envelope) to this .svg or .png.")
             ->type_name("FILE");
-    cmd->add_option("--compare", args->compare,
-                    "With --plot: also draw the mean PCFs of this arrangement (e.g. a `synth --method pcf` "
-                    "output), measured on the model's axis, over the model's.")
-        ->type_name("FILE");
+    args->compare_opt =
+        cmd->add_option(
+               "--compare", args->compare,
+               "With --plot: also draw the mean PCFs of this arrangement (e.g. a `synth --method pcf` "
+               "output), measured on the model's axis, over the model's.")
+            ->type_name("FILE");
     args->flags.add(*cmd, {method_options("analyze", tessera::pcf_analysis_option_table())});
-    cmd->add_flag("--standard-pcf", args->standard,
-                  "Write the standard estimate g(r) (spatstat's pcf: Gaussian kernel, translation edge "
-                  "correction, physical units) of every class pair to --csv instead of a model, on the r grid "
-                  "of --r-max, --bandwidth and --bins.");
+    args->standard_opt = cmd->add_flag(
+        "--standard-pcf", args->standard,
+        "Write the standard estimate g(r) (spatstat's pcf: Gaussian kernel, translation edge "
+        "correction, physical units) of every class pair to --csv instead of a model, on the r grid "
+        "of --r-max, --bandwidth and --bins.");
     args->csv_opt =
         cmd->add_option("--csv", args->csv, "With --standard-pcf: the .csv to write (r,class_a,class_b,g).")
             ->type_name("FILE");
     // With --standard-pcf: --r-max, --bandwidth, --bins.
     args->estimate.add(*cmd, {method_options("standard-pcf", tessera::pair_correlation_option_table())});
+    cmd->add_flag(
+        "--decompose", args->decompose,
+        "Split the animation INPUT into its coarse motion, a low-pass filter of its samples' positions in "
+        "space and time, written to -o, and its details (the offsets input - coarse) written to "
+        "--detail (Dynamic Element Textures, section 5); `tessera recombine` adds them back.");
+    args->detail_opt =
+        cmd->add_option("--detail", args->detail,
+                        "With --decompose: the details' animation to write (.json, .csv or .usda).")
+            ->type_name("FILE");
+    // With --decompose: --spatial-radius, --topology-radius, --temporal-radius, --threads.
+    args->low_pass.add(*cmd, {method_options("decompose", tessera::low_pass_option_table())});
     add_input_domain_option(*cmd, args->input_domain, "INPUT");
     add_quiet_option(*cmd, args->quiet);
-    return {cmd, [args] { args->standard ? run_standard(*args) : run_model(*args); }};
+    return {cmd, [args] {
+                if (args->decompose)
+                    run_motion(*args);
+                else if (args->standard)
+                    run_standard(*args);
+                else
+                    run_model(*args);
+            }};
 }
 
 }  // namespace tessera_cli

@@ -30,7 +30,7 @@ namespace {
 
 
 struct SynthArgs {
-    std::string input, output, preview, input_domain, domain, meshes = "auto";
+    std::string input, output, preview, input_domain, domain, meshes = "auto", coarse;
     std::string gltf_instancing = "gpu";
     double scale = 2.0;
     std::string method = "det";
@@ -47,6 +47,7 @@ struct SynthArgs {
     CLI::Option* method_option = nullptr;
     CLI::Option* scale_option = nullptr;
     CLI::Option* domain_option = nullptr;
+    CLI::Option* coarse_option = nullptr;
 };
 
 tessera::Domain output_domain(const SynthArgs& args, const tessera::Exemplar& exemplar) {
@@ -90,8 +91,11 @@ void check_options(SynthArgs& args) {
 }
 
 void run_synth_dynamic(SynthArgs& args, StatusPrinter& status) {
-    const DynamicRun run{args.input, args.input_domain, args.output, args.preview, args.dynamic, args.quiet};
+    const DynamicRun run{args.input, args.input_domain, args.output, args.preview, args.coarse, args.dynamic,
+                         args.quiet};
     check_dynamic_outputs(run);
+    if (!args.coarse.empty() && (args.domain_option->count() > 0 || args.scale_option->count() > 0))
+        fail_option("--coarse gives the output's elements and where they go: --domain and --scale do not apply");
     if (args.domain_option->count() > 0) tessera::check_domain_spec(args.domain, "--domain");
     run_dynamic(run, status, [&](const tessera::Exemplar& first) { return output_domain(args, first); });
 }
@@ -100,6 +104,8 @@ void run_synth(SynthArgs& args) {
     std::optional<InterruptScope> interrupt_scope(std::in_place);
     StatusPrinter status("synth", args.quiet, std::cerr);
     check_options(args);
+    if (!args.coarse.empty() && args.method != "dynamic")
+        fail_option("--coarse belongs to --method dynamic, not " + args.method);
     if (args.method == "dynamic") {
         interrupt_scope.reset();  // run_dynamic has its own
         return run_synth_dynamic(args, status);
@@ -233,6 +239,13 @@ Subcommand add_synth_command(CLI::App& app) {
                         "in space and time from an exemplar with frames, docs/dynamic.md; the default when INPUT "
                         "has frames).")
             ->capture_default_str();
+    args->coarse_option =
+        cmd->add_option("--coarse", args->coarse,
+                        "Dynamic method: an animation (.json or .csv with frames) giving the output's elements "
+                        "and their coarse motion: threads, sheets or particles; the exemplar's detail motion is "
+                        "laid on it, all frames together (docs/dynamic.md). The output has its elements, frames "
+                        "and times.")
+            ->type_name("FILE");
     // Every option of the methods, from their tables: shared ones (--seed, --iterations) once.
     args->flags.add(*cmd, {args->det_options, args->pcf_options, args->dynamic_options});
     add_quiet_option(*cmd, args->quiet);

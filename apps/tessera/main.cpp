@@ -1,7 +1,7 @@
 // apps/tessera/main.cpp — entry point of the `tessera` command-line tool: sets up
-// the subcommands (synth, metrics, render, edit, scene, analyze, grow, world, brush, studio; one file each), parses with CLI11,
-// runs the chosen one, and turns every failure into one line on stderr and an
-// exit code (docs/cli.md). The CLI only parses, calls the library and prints.
+// the subcommands (synth, metrics, render, edit, scene, analyze, recombine, grow, world, brush,
+// studio; one file each), parses with CLI11, runs the chosen one, and turns every failure into
+// one line on stderr and an exit code (docs/cli.md). The CLI only parses, calls the library and prints.
 #include <exception>
 #include <iostream>
 #include <new>
@@ -92,7 +92,8 @@ int main(int argc, char** argv) {
 
     const Subcommand commands[] = {add_synth_command(app), add_metrics_command(app), add_render_command(app),
                                     add_edit_command(app), add_scene_command(app), add_analyze_command(app),
-                                    add_grow_command(app), add_world_command(app), add_brush_command(app), add_studio_command(app)};
+                                    add_recombine_command(app), add_grow_command(app), add_world_command(app),
+                                    add_brush_command(app), add_studio_command(app)};
 
     try {
         app.parse(argc, argv);

@@ -15,6 +15,7 @@ class StatusPrinter;
 
 struct DynamicRun {
     std::string input, input_domain, output, preview;
+    std::string coarse;  // --coarse: all-frame synthesis on this coarse motion (else frame by frame)
     tessera::DynamicOptions options;
     bool quiet = false;
 };

@@ -3,7 +3,13 @@
 //   .json: the native document plus a top-level "frames" array; its "elements" define the
 //          elements (type, id, pose, attributes) and each frame gives their positions by id;
 //   .csv:  one row per sample per frame, with a frame column (and the frame's time stamp in
-//          the time column) or a t column (the time stamp).
+//          the time column) or a t column (the time stamp);
+// and written only, as animated scenes for 3D tools (each frame's elements as build_scene
+// poses them, SaveOptions::geometry):
+//   .usda: a USD layer: particles and rigid elements on a PointInstancer, threads as
+//          BasisCurves, sheets as a Mesh, all with time samples, one per frame;
+//   .gltf/.glb: glTF 2.0: a node per element with translation (and rotation) channels,
+//          threads and sheets as meshes whose frames are morph targets with a weights channel.
 // A file without frames reads as a one-frame animation, and load() (tessera/io.hpp) of an
 // animated file gives its frame 0, so that every command reading an exemplar takes either.
 // Writers write atomically, as save() does. Errors are one line naming the file and the
@@ -24,8 +30,10 @@ namespace tessera {
 // when its content is invalid (validated with Animation::validate).
 Animation load_animation(const std::string& path, const LoadOptions& options = {});
 
-// Writes by extension (case-insensitive): .json, .csv. Throws Error(option) for another
-// extension, Error(io) when the file cannot be written.
+// Writes by extension (case-insensitive): .json, .csv, .usda, .gltf, .glb. Throws
+// Error(option) for another extension, Error(io) when the file cannot be written, and for
+// the scene formats Error(input) naming the file for elements they cannot draw (deformed
+// meshes, ids of 2^63 or more in .usda) and build_scene's errors.
 void save_animation(const Animation& data, const std::string& path, const SaveOptions& options = {});
 // The same, recording the run statistics in .json (as save() does for an Arrangement).
 void save_animation(const Animation& data, const RunStats& stats, const std::string& path,

@@ -62,6 +62,17 @@ struct DynamicOptions {
     // domain's bounding box (periodic: a steady flow keeps the domain filled); off = it is put
     // back at the nearest point inside.
     bool wrap = false;
+    // Graph synthesis (section 4.3, tessera/graph_motion.hpp): motion for a still. -1 =
+    // automatic (a one-frame exemplar is enriched to 24 frames), 0 = off, N >= 2 = the
+    // exemplar's frame 0 is enriched to N frames (its own motion, if any, is set aside).
+    int graph_frames = -1;
+    // All-frame synthesis on a coarse motion (synthesize_on_coarse): the width of the grid
+    // neighbourhood of threads and sheets in samples (half-width size / 2: 7 = the paper's 7 x 7), and how the
+    // exemplar is split into coarse and detail motion (section 5): the low-pass kernel's
+    // half-width along the elements in samples and in frames.
+    int topology_size = 7;
+    int split_samples = 3;
+    int split_frames = 2;
     // Worker threads; 0 = all hardware threads. Results are byte-identical for every value.
     int threads = 0;
     // Seed of every random draw (counter-based, keyed by frame and world position).
@@ -74,10 +85,25 @@ struct AnimatedArrangement : Animation {
 
 // Synthesizes an animation of `exemplar` over `domain` frame by frame. Throws Error(input)
 // for an invalid exemplar (Animation::validate) or one with multi-sample elements (threads
-// and sheets are not synthesized yet), Error(option) for a bad option (checked against
+// and sheets follow a coarse motion: synthesize_on_coarse), Error(option) for a bad option (checked against
 // dynamic_option_table), Error(domain) for a domain of another dimension, Cancelled when
 // `progress` returns false (stages "first frame" and "frame").
 AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& domain,
                                        const DynamicOptions& options = {}, const Progress& progress = {});
+
+// All-frame synthesis on a coarse motion given for whole elements (section 4.1, all-frame
+// sequencing; Figures 10 and 13): the output has `coarse`'s elements, frames and times, and
+// each sample is its coarse position plus a detail motion synthesized from the exemplar's.
+// The exemplar is split into coarse and detail motion (section 5, motion_analysis.hpp); the
+// details, in the local frame of the coarse geometry (along a thread, across it, a sheet's
+// normal), are initialized by copying whole exemplar elements over windows of frames and
+// optimised by search and Jacobi assignment over temporal-non-causal grid neighbourhoods
+// (threads: topology_size samples along the thread; sheets: topology_size^2 on the sheet;
+// particles: the trail only), then threads and sheets are held to their rest lengths.
+// Throws Error(input) for an invalid exemplar or coarse motion, a coarse type the exemplar
+// lacks or has with another topology, multi-sample elements of topology none; Error(option)
+// for a bad option; Cancelled when `progress` returns false (stage "iteration").
+AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animation& coarse,
+                                         const DynamicOptions& options = {}, const Progress& progress = {});
 
 }  // namespace tessera

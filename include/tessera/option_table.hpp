@@ -15,7 +15,8 @@
 // (src/det/det_option_table.cpp, src/pcf/pcf_option_table.cpp,
 // src/grow/grow_option_table.cpp, src/det/edit_option_table.cpp,
 // src/pcf/pcf_analysis_option_table.cpp, src/metrics/pair_correlation_option_table.cpp,
-// src/brush/brush_option_table.cpp, src/dynamic/dynamic_option_table.cpp),
+// src/brush/brush_option_table.cpp, src/dynamic/dynamic_option_table.cpp,
+// src/analysis/low_pass_option_table.cpp),
 // the code that uses it, and a line in docs/cli.md.
 #pragma once
 
@@ -36,6 +37,7 @@ struct PcfAnalysisSettings;
 struct PcfOptions;
 struct BrushOptions;
 struct DynamicOptions;
+struct LowPassOptions;
 
 enum class OptionKind {
     flag,     // true / false (a CLI flag without a value)
@@ -89,6 +91,8 @@ const OptionTable<GrowOptions>& grow_option_table();
 const OptionTable<EditOptions>& edit_option_table();
 // Dynamic synthesis (`tessera synth --method dynamic`, synthesize_dynamic).
 const OptionTable<DynamicOptions>& dynamic_option_table();
+// The motion analysis (`tessera analyze --decompose`, decompose_motion, Python's decompose).
+const OptionTable<LowPassOptions>& low_pass_option_table();
 // Brushing (`tessera brush`, session files' "options", the studio's requests).
 const OptionTable<BrushOptions>& brush_option_table();
 // The PCF method's analysis (`tessera analyze`, analyze_distribution); pcf_option_table()

@@ -20,6 +20,7 @@
 #include "tessera/option_text.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/motion_analysis.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
 namespace py = pybind11;
@@ -86,6 +87,15 @@ tessera::AnimatedArrangement synthesize_dynamic(const tessera::Animation& exempl
                callback);
 }
 
+// coarse=: the exemplar's detail motion on a coarse motion, all frames together.
+tessera::AnimatedArrangement synthesize_on_coarse(const tessera::Animation& exemplar, const tessera::Animation& coarse,
+                                                  const py::dict& options, const py::object& callback) {
+    tessera::DynamicOptions o;
+    apply_keywords(tessera::dynamic_option_table(), o, options, exemplar.structure.dimension, "method 'dynamic'");
+    return run([&](const tessera::Progress& p) { return tessera::synthesize_on_coarse(exemplar, coarse, o, p); },
+               callback);
+}
+
 tessera::Arrangement synthesize_model(const tessera::PcfModel& model, const tessera::Domain& domain,
                                       const py::dict& options, const py::object& callback) {
     tessera::PcfSynthOptions o;
@@ -106,6 +116,8 @@ void bind_synthesize(py::module_& m) {
           py::arg("progress"));
     m.def("synthesize_dynamic", &synthesize_dynamic, py::arg("exemplar"), py::arg("domain"), py::arg("options"),
           py::arg("progress"));
+    m.def("synthesize_on_coarse", &synthesize_on_coarse, py::arg("exemplar"), py::arg("coarse"), py::arg("options"),
+          py::arg("progress"));
     m.def("synthesize_model", &synthesize_model, py::arg("model"), py::arg("domain"), py::arg("options"),
           py::arg("progress"));
     m.def(
@@ -119,6 +131,7 @@ void bind_synthesize(py::module_& m) {
             tables["brush"] = describe_table(tessera::brush_option_table());  // tessera.BrushCanvas, tessera.brush
             tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)
             tables["analyze"] = describe_table(tessera::pcf_analysis_option_table());  // tessera.analyze
+            tables["low_pass"] = describe_table(tessera::low_pass_option_table());  // tessera.decompose
             // tessera.pair_correlation and tessera.metrics (`analyze --standard-pcf`, `metrics`)
             tables["pair_correlation"] = describe_table(tessera::pair_correlation_option_table());
             return tables;

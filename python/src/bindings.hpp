@@ -18,6 +18,8 @@ namespace tessera_python {
 void bind_data(pybind11::module_& m);
 // Animation / AnimatedArrangement <-> numpy arrays, their files and the animated PNG (bind_animation.cpp).
 void bind_animation(pybind11::module_& m);
+// decompose_motion / recombine_motion: coarse and detail motion (bind_motion.cpp).
+void bind_motion(pybind11::module_& m);
 // Domain and its constructors (bind_domain.cpp).
 void bind_domain(pybind11::module_& m);
 // tessera::Error -> the exception classes of tessera.errors (bind_errors.cpp).

@@ -12,6 +12,7 @@ PYBIND11_MODULE(_tessera, m) {
     tessera_python::bind_domain(m);
     tessera_python::bind_data(m);
     tessera_python::bind_animation(m);
+    tessera_python::bind_motion(m);
     tessera_python::bind_synthesize(m);
     tessera_python::bind_grow(m);
     tessera_python::bind_brush(m);

@@ -38,8 +38,8 @@ __version__ = _tessera.version
 __all__ = [
     "AnimatedArrangement", "Animation", "Arrangement", "BrushCanvas", "Cancelled", "Domain", "DomainError",
     "Exemplar", "FileError", "Grower", "InputError", "InternalError", "OptionError", "PcfModel", "TesseraError",
-    "analyze", "animation", "brush", "exemplar", "load", "load_animation", "metrics", "pair_correlation", "render",
-    "save", "save_animation", "synthesize",
+    "analyze", "animation", "brush", "decompose", "exemplar", "load", "load_animation", "metrics", "pair_correlation",
+    "recombine", "render", "save", "save_animation", "synthesize",
 ]
 
 # The methods of synthesize, each with its option table.
@@ -121,6 +121,40 @@ def save_animation(animation, path):
     _tessera.save_animation(animation, _os.fspath(path))
 
 
+def decompose(animation, **options):
+    """Split an Animation into its coarse motion and its details (`tessera analyze
+    --decompose`; Dynamic Element Textures, section 5): returns (coarse, detail), two
+    Animations with the input's elements and times. coarse is a low-pass filter of the
+    samples' positions in space and time (a separable Gaussian whose window shrinks
+    symmetrically near the first and last frames, the ends of threads and sheets, and for
+    particles the domain's bounding box); detail holds the offsets input - coarse, so that
+    recombine(coarse, detail) gives the input back. animation may be a path to a file with
+    frames. See docs/dynamic.md, "Analysis: coarse and detail motion"."""
+    _options.check_keywords("decompose", options, ("low_pass",))
+    return _tessera.decompose_motion(_as_animation(animation, "animation"), options)
+
+
+_options.with_signature(decompose, ("animation",), ("low_pass",))
+
+
+def recombine(coarse, detail):
+    """The coarse motion of one animation with the details of another (`tessera recombine`):
+    coarse + detail, an Animation with coarse's elements and times. Frame f takes detail frame
+    f mod its frame count; the i-th element of a kind (particle, thread, sheet) takes the
+    detail's (i mod its count)-th element of that kind; threads and sheets of another sample
+    count are resampled linearly along their index. Either may be a path. InputError when the
+    detail has no element of a kind coarse has, or another dimension."""
+    return _tessera.recombine_motion(_as_animation(coarse, "coarse"), _as_animation(detail, "detail"))
+
+
+def _as_animation(data, name):
+    if isinstance(data, (str, bytes, _os.PathLike)):
+        return load_animation(data)
+    if not isinstance(data, Animation):
+        raise OptionError("%s must be a tessera.Animation or a file path, got %s" % (name, type(data).__name__))
+    return data
+
+
 def save(data, path, *, gltf_instancing="gpu"):
     """Write an exemplar or arrangement, chosen by the extension of path, atomically (a
     failed call leaves no file). docs/format.md describes each format:
@@ -151,7 +185,7 @@ def render(data, path, width=800, meshes="auto", legend=True):
     _tessera.render(data, _os.fspath(path), width, meshes, bool(legend))
 
 
-def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None, **options):
+def synthesize(exemplar, domain=None, *, scale=2.0, method="det", coarse=None, progress=None, **options):
     """Synthesize an arrangement like `exemplar` that fills `domain`; returns an Arrangement
     (an AnimatedArrangement for method="dynamic").
 
@@ -170,7 +204,13 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None,
               An Animation, or a path to a file with frames, is synthesized by "dynamic" when
               method is left at "det" (as `tessera synth` picks it); pass its frame 0
               (animation.exemplar, tessera.load(path)) for a static method. An Exemplar given
-              with method="dynamic" is a one-frame animation: still, unless `flow` moves it.
+              with method="dynamic" is a one-frame animation, given motion by graph synthesis
+              first (graph_frames; docs/dynamic.md, "Graph synthesis").
+    coarse    method "dynamic" only: an Animation (or a path to a file with frames) giving the
+              output's elements (threads, sheets or particles) and their coarse motion; the
+              exemplar's detail motion is laid on it, all frames together (docs/dynamic.md,
+              "Threads and sheets on a coarse motion"). The output has its elements and frames;
+              domain and scale do not apply.
     progress  optional callable, called with a dict (stage, iteration, iterations, energy,
               elapsed, fraction) for every event of the run: its stages (det: "init",
               "patches", "fill", "iteration", "relax", "repair", "settle" with physics;
@@ -199,6 +239,8 @@ def synthesize(exemplar, domain=None, *, scale=2.0, method="det", progress=None,
     options = _options.of_method("synthesize", method, _SYNTH_METHODS, options)
     if progress is not None and not callable(progress):
         raise OptionError("progress must be callable, got %r" % (progress,))
+    if coarse is not None:
+        return _synthesize_on_coarse(exemplar, domain, method, coarse, options, progress)
     if method == "dynamic":
         return _synthesize_dynamic(exemplar, domain, scale, options, progress)
     if isinstance(exemplar, (str, bytes, _os.PathLike)):
@@ -232,6 +274,20 @@ def _method_for(exemplar, method):
     return method
 
 
+def _synthesize_on_coarse(exemplar, domain, method, coarse, options, progress):
+    if method != "dynamic":
+        raise OptionError("coarse= belongs to method='dynamic', not %r" % (method,))
+    if domain is not None:
+        raise OptionError("coarse= gives the output's elements and where they go: domain does not apply")
+    if isinstance(exemplar, (str, bytes, _os.PathLike)):
+        exemplar = load_animation(exemplar)
+    if isinstance(coarse, (str, bytes, _os.PathLike)):
+        coarse = load_animation(coarse)
+    if not isinstance(exemplar, Animation) or not isinstance(coarse, Animation):
+        raise OptionError("exemplar and coarse must be tessera.Animations or file paths with frames")
+    return _tessera.synthesize_on_coarse(exemplar, coarse, options, progress)
+
+
 def _synthesize_dynamic(exemplar, domain, scale, options, progress):
     if isinstance(exemplar, (str, bytes, _os.PathLike)):
         exemplar = load_animation(exemplar)
@@ -244,7 +300,7 @@ def _synthesize_dynamic(exemplar, domain, scale, options, progress):
                                        progress)
 
 
-_options.with_signature(synthesize, ("exemplar", "domain", "scale", "method"), _SYNTH_METHODS, ("progress",))
+_options.with_signature(synthesize, ("exemplar", "domain", "scale", "method", "coarse"), _SYNTH_METHODS, ("progress",))
 
 
 class Grower(_tessera.Grower):

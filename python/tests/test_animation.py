@@ -1,6 +1,8 @@
 """Animations (tessera.Animation) from numpy arrays and files, and dynamic synthesis:
 synthesize(method="dynamic") keeps the exemplar's motion, is the same for every thread count,
 names a bad keyword, and its results travel through .json, .csv and an animated PNG."""
+import os
+
 import numpy as np
 import pytest
 
@@ -127,9 +129,9 @@ def test_save_writes_an_animated_png(synthesized, tmp_path):
 
 
 def test_a_static_exemplar_is_a_one_frame_animation(two_class):
-    # Still elements moved by a global flow.
+    # Still elements moved by a global flow (graph synthesis off: it would give them motion).
     out = tessera.synthesize(two_class, method="dynamic", frames=3, temporal_size=1, iterations=0, threads=1,
-                             flow=(0.25, 0))
+                             flow=(0.25, 0), graph_frames=0)
     assert out.positions.shape[0] == 3
     velocity = mean_velocity(out)
     assert 0.15 < velocity[0] <= 0.25 and abs(velocity[1]) < 0.05
@@ -142,3 +144,17 @@ def test_the_docs_example_runs(tmp_path, capsys):
     assert tessera.load_animation(tmp_path / "drift.json").frame_count == 6
     assert b"acTL" in (tmp_path / "drift.png").read_bytes()
     assert "moving at" in capsys.readouterr().out
+
+
+EXAMPLES = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "dynamic")
+
+
+def test_threads_follow_a_coarse_motion():
+    exemplar = os.path.join(EXAMPLES, "noodles_2d.json")
+    coarse = tessera.load_animation(os.path.join(EXAMPLES, "noodles_coarse_2d.json"))
+    out = tessera.synthesize(exemplar, coarse=coarse, method="dynamic", seed=3, threads=1)
+    assert out.positions.shape == coarse.positions.shape
+    offset = np.linalg.norm(out.positions - coarse.positions, axis=2)
+    assert 0.0 < offset.mean() < 0.3   # detail laid on, the coarse path kept
+    with pytest.raises(tessera.OptionError, match="domain does not apply"):
+        tessera.synthesize(exemplar, domain="box:4,4", coarse=coarse, method="dynamic")

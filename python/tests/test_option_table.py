@@ -1,7 +1,7 @@
 """The option tables (include/tessera/option_table.hpp) are the one declaration of every
 option: walk them and check that each option is a keyword of tessera.synthesize (det, pcf,
 dynamic),
-tessera.Grower, tessera.pair_correlation and tessera.metrics with the table's default, a
+tessera.Grower, tessera.pair_correlation, tessera.metrics and tessera.decompose with the table's default, a
 flag of `tessera synth` / `grow` / `edit` / `analyze` / `metrics` whose --help shows that
 default, a row of docs/cli.md, and that a value outside its check is refused with the
 option named as each front end spells it (editing has no Python call, and tessera.analyze
@@ -20,8 +20,8 @@ from tessera import _tessera
 TABLES = _tessera.option_tables()
 # The commands each table makes flags for (the estimate's: analyze --standard-pcf and metrics).
 COMMANDS = {"det": ("synth",), "pcf": ("synth",), "dynamic": ("synth",), "grow": ("grow",), "edit": ("edit",), "analyze": ("analyze",),
-            "pair_correlation": ("analyze", "metrics"), "brush": ("brush",)}
-PYTHON_METHODS = ("det", "pcf", "dynamic", "grow", "pair_correlation", "brush")
+            "pair_correlation": ("analyze", "metrics"), "brush": ("brush",), "low_pass": ("analyze",)}
+PYTHON_METHODS = ("det", "pcf", "dynamic", "grow", "pair_correlation", "brush", "low_pass")
 # The methods of tessera.synthesize: one keyword per option name over them.
 SYNTH_METHODS = ("det", "pcf", "dynamic")
 
@@ -47,6 +47,8 @@ def functions_of(method):
         return [tessera.pair_correlation, tessera.metrics]
     if method == "brush":
         return [tessera.BrushCanvas.__init__, tessera.brush]
+    if method == "low_pass":
+        return [tessera.decompose]
     return [tessera.synthesize]
 
 
@@ -135,7 +137,9 @@ def test_a_value_outside_the_check_names_the_keyword(item, two_class):
                                   lambda **kw: tessera.metrics(two_class, two_class, **kw)],
              "brush": [lambda **kw: tessera.BrushCanvas(((0, 0), (10, 10)), **kw),
                        lambda **kw: tessera.brush(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
-                                                               "brush", "design_2d.json"), **kw)]}
+                                                               "brush", "design_2d.json"), **kw)],
+             "low_pass": [lambda **kw: tessera.decompose(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                                                      "dynamic", "swirl_particles_2d.json"), **kw)]}
     default = [lambda **kw: tessera.synthesize(two_class, method=method, **{"iterations": 0, **kw})]
     for call in calls.get(method, default):
         with pytest.raises(tessera.OptionError) as error:
@@ -168,6 +172,8 @@ def test_a_value_outside_the_check_names_the_flag(item, tmp_path, root):
         args = [example, example, "-o", str(out)]
     elif method == "brush":
         args = [str(root / "examples" / "brush" / "design_2d.json"), "-o", str(out)]
+    elif method == "low_pass":
+        args += ["--decompose", "--detail", str(tmp_path / "detail.json")]
     result = subprocess.run([os.environ["TESSERA_CLI"], command, *args, row["flag"], str(value)],
                             capture_output=True, text=True)
     assert result.returncode == 2, result.stderr

@@ -31,6 +31,9 @@ enum class Purpose : std::uint64_t {
     brush_field = 11,   // brushing: the tilt that breaks a symmetric element field's saddle
     dynamic_candidate = 12,  // dynamic: random input samples tried by the search
     dynamic_similarity = 13, // dynamic: input samples scanned for the k-coherence sets
+    dynamic_detail = 14,     // dynamic on a coarse motion: random candidates of the detail search
+    dynamic_patch = 15,      // dynamic on a coarse motion: the first patch copied onto each element
+    dynamic_graph = 16,      // graph synthesis: its node pool and the annealing of its motion paths
     test = 99
 };
 

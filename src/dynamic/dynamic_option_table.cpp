@@ -2,6 +2,7 @@
 // `tessera synth --method dynamic` makes its flags from this table and Python's
 // synthesize(method="dynamic") its keywords (tessera/option_table.hpp).
 #include "core/option_rows.hpp"
+#include "dynamic/graph_exemplar.hpp"
 #include "dynamic/st_neighbourhood.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -47,6 +48,7 @@ void add_neighbourhood_rows(OptionTable<O>& t) {
 void add_solver_rows(OptionTable<O>& t) {
     t.push_back(integer_row<O>("frames", "Output frames; 0 = as many as the exemplar has.",
                                [](auto& o) -> auto& { return o.frames; }, between(0, 1000000)));
+    t.push_back(dynamic::graph_frames_row());  // graph synthesis for a still (graph_exemplar.cpp)
     t.push_back(integer_row<O>("matches",
                                "N best input matches blended by Eq. 11-12 (smooth synthesis); 1 = the basic algorithm.",
                                [](auto& o) -> auto& { return o.matches; }, between(1, 8)));
@@ -72,12 +74,28 @@ void add_solver_rows(OptionTable<O>& t) {
                             [](auto& o) -> auto& { return o.wrap; }));
 }
 
+// All-frame synthesis on a coarse motion (synthesize_on_coarse).
+void add_coarse_rows(OptionTable<O>& t) {
+    t.push_back(integer_row<O>("topology_size",
+                               "On a coarse motion: width in samples of the grid neighbourhood of threads and "
+                               "sheets (its half-width is size / 2: 7 = the paper's 7 x 7).",
+                               [](auto& o) -> auto& { return o.topology_size; }, between(3, 15)));
+    t.push_back(integer_row<O>("split_samples",
+                               "On a coarse motion: half-width in samples along the elements of the low-pass "
+                               "filter that splits the exemplar into coarse and detail motion.",
+                               [](auto& o) -> auto& { return o.split_samples; }, between(0, 64)));
+    t.push_back(integer_row<O>("split_frames",
+                               "On a coarse motion: half-width in frames of that filter.",
+                               [](auto& o) -> auto& { return o.split_frames; }, between(0, 64)));
+}
+
 OptionTable<O> make_table() {
     OptionTable<O> t;
     t.push_back(seed_row<O>([](auto& o) -> auto& { return o.seed; }));
     t.push_back(threads_row<O>([](auto& o) -> auto& { return o.threads; }));
     add_solver_rows(t);
     add_neighbourhood_rows(t);
+    add_coarse_rows(t);
     return t;
 }
 

@@ -90,14 +90,6 @@ void keep_best(int id, double d, int n, int* best, double* dist, int& count) {
     count = std::min(count + 1, n);
 }
 
-// Eq. 12: omega_j = 1 - d_j / sum_k d_k (Eq. 11 normalises by their sum); equal weights when
-// every distance is zero, and 1 for a single match.
-void blend_weights(const double* dist, int count, double* omega) {
-    double sum = 0.0;
-    for (int j = 0; j < count; ++j) sum += dist[j];
-    for (int j = 0; j < count; ++j) omega[j] = count == 1 ? 1.0 : sum > 0.0 ? 1.0 - dist[j] / sum : 1.0;
-}
-
 void write_predictions(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
                        SearchScratch& scratch) {
     const StNeighbourhood& nb = scratch.neighbourhood;
@@ -143,6 +135,14 @@ double search_sample(const InputFrames& input, OutputFrames& output, int s, cons
 }
 
 }  // namespace
+
+// Eq. 12: omega_j = 1 - d_j / sum_k d_k (Eq. 11 normalises by their sum); equal weights when
+// every distance is zero, and 1 for a single match.
+void blend_weights(const double* dist, int count, double* omega) {
+    double sum = 0.0;
+    for (int j = 0; j < count; ++j) sum += dist[j];
+    for (int j = 0; j < count; ++j) omega[j] = count == 1 ? 1.0 : sum > 0.0 ? 1.0 - dist[j] / sum : 1.0;
+}
 
 double search_frame(const InputFrames& input, OutputFrames& output, const StParams& params,
                     const SearchSettings& settings, std::vector<SearchScratch>& scratch, int threads) {

@@ -38,6 +38,9 @@ double search_frame(const InputFrames& input, OutputFrames& output, const StPara
 // `radius`: the output neighbourhood radius (whose neighbours' pairs may hold the sample).
 void assign_frame(OutputFrames& output, double radius, int threads);
 
+// Eq. 12: the blending weights of `count` matches at distances `dist` (1 for a single match).
+void blend_weights(const double* dist, int count, double* omega);
+
 // k-coherence sets: for every input sample-frame, the k most similar among `scan` input
 // sample-frames of its type drawn at random (keyed by the seed and the id), other samples
 // only; the exemplar's sample-frames are too many for all pairs (Tong et al. 2002 build

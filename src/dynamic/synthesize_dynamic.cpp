@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/parallel.hpp"
 #include "core/progress_span.hpp"
 #include "dynamic/frame_search.hpp"
+#include "dynamic/graph_exemplar.hpp"
 #include "dynamic/input_frames.hpp"
 #include "dynamic/output_frames.hpp"
 #include "tessera/det.hpp"
@@ -33,8 +35,8 @@ void check_inputs(const Animation& exemplar, const Domain& domain, const Dynamic
     exemplar.validate("exemplar");
     if (exemplar.structure.has_multi_sample_elements())
         throw Error(ErrorKind::input,
-                    "exemplar: dynamic synthesis takes single-sample elements (particles, agents); threads and "
-                    "sheets are not synthesized yet");
+                    "exemplar: frame-by-frame synthesis takes single-sample elements (particles, agents); "
+                    "threads and sheets follow a coarse motion (--coarse)");
     if (domain.dimension() != exemplar.structure.dimension)
         throw Error(ErrorKind::domain, "the output domain is " + std::to_string(domain.dimension()) +
                                            "D but the exemplar is " + std::to_string(exemplar.structure.dimension) + "D");
@@ -197,11 +199,16 @@ double frame_interval(const Animation& exemplar) {
 
 }  // namespace
 
-AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& domain, const DynamicOptions& options,
+AnimatedArrangement synthesize_dynamic(const Animation& given, const Domain& domain, const DynamicOptions& options,
                                        const Progress& progress) {
-    check_inputs(exemplar, domain, options);
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    // A still gets its motion from graph synthesis first (section 4.3, graph_exemplar.cpp).
+    check_options(dynamic_option_table(), options);
+    std::optional<Animation> enriched;
+    std::vector<std::string> graph_notes;
+    const Animation& exemplar = dynamic::exemplar_with_motion(given, options, enriched, graph_notes);
+    check_inputs(exemplar, domain, options);
     const StParams params = resolve_params(exemplar, options);
     const int frames = options.frames > 0 ? options.frames : std::max(2, exemplar.frame_count());
     const double dt = frame_interval(exemplar);
@@ -211,6 +218,7 @@ AnimatedArrangement synthesize_dynamic(const Animation& exemplar, const Domain& 
     FrameByFrame run(exemplar, domain, options, params, first);
     AnimatedArrangement result;
     result.stats.method = "dynamic";
+    result.stats.notes = graph_notes;
     result.stats.radius = params.radius;
     result.stats.seed = options.seed;
     result.stats.threads = core::resolve_threads(options.threads);

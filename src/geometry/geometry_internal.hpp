@@ -67,9 +67,9 @@ std::string to_obj(const Scene& scene);
 std::string to_mesh_ply(const Scene& scene);
 std::string to_gltf(const Scene& scene, bool binary, GltfInstancing instancing);
 std::string to_usda(const Scene& scene);
-// An animation's scenes (the same instances in every frame) as one layer whose poses are
-// time samples, one per frame (time code = frame index, played at frames_per_second).
-// Error(input) for elements that are not instanced (deformed meshes).
-std::string to_usda_animated(const std::vector<Scene>& frames, double frames_per_second);
+// The /World/Elements PointInstancer prim of the instanced elements of `frames` (the same
+// instances in every frame), poses as time samples at `codes` when there are several
+// frames; the animated layer's part (write_usda_animated.cpp, animated_scene.hpp).
+std::string usda_point_instancer(const std::vector<Scene>& frames, const std::vector<double>& codes);
 
 }  // namespace tessera::geometry

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <limits>
 
 #include "tessera/error.hpp"
 
@@ -63,6 +64,51 @@ std::string list(const std::vector<std::string>& items) {
     std::string out = "[";
     for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
     return out + "]";
+}
+
+std::string pad(int depth) {
+    return std::string(static_cast<size_t>(depth) * 4, ' ');
+}
+
+std::string int64_id(std::uint64_t id) {
+    if (id > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+        throw Error(ErrorKind::input, "element id " + std::to_string(id) +
+                                          " is too large for USD's int64 ids; use .json or .csv");
+    return std::to_string(id);
+}
+
+namespace {
+
+// A time code: the shortest text that reads back exactly ("3" for frame 3).
+std::string code_text(double code) {
+    char buffer[32];
+    const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, code);
+    if (ec != std::errc()) throw Error(ErrorKind::internal, "cannot format a time code");
+    return std::string(buffer, ptr);
+}
+
+}  // namespace
+
+std::string sampled(const std::string& type_and_name, const std::vector<std::string>& per_frame,
+                    const std::vector<double>& codes, int depth) {
+    if (per_frame.size() == 1) return pad(depth) + type_and_name + " = " + per_frame[0] + "\n";
+    std::string out = pad(depth) + type_and_name + ".timeSamples = {\n";
+    for (size_t f = 0; f < per_frame.size(); ++f)
+        out += pad(depth + 1) + code_text(codes.at(f)) + ": " + per_frame[f] + ",\n";
+    return out + pad(depth) + "}\n";
+}
+
+std::string layer_header(const std::string& doc, const std::vector<double>& codes, double codes_per_second) {
+    std::string out = "#usda 1.0\n(\n";
+    out += "    defaultPrim = \"World\"\n";
+    out += "    doc = " + quoted(doc) + "\n";
+    if (codes.size() > 1) {
+        out += "    endTimeCode = " + code_text(codes.back()) + "\n";
+        out += "    startTimeCode = " + code_text(codes.front()) + "\n";
+        out += "    timeCodesPerSecond = " + real(codes_per_second) + "\n";
+    }
+    out += "    metersPerUnit = 1\n";
+    return out + "    upAxis = \"Z\"\n)\n\n";
 }
 
 }  // namespace tessera::geometry::usda

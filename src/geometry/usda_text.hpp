@@ -4,6 +4,7 @@
 // to the library.
 #pragma once
 
+#include <cstdint>
 #include <set>
 #include <string>
 #include <vector>
@@ -34,5 +35,19 @@ std::string real(double value);
 std::string tuple(const Vec3& v);
 // "[a, b, ...]".
 std::string list(const std::vector<std::string>& items);
+// "    " x depth.
+std::string pad(int depth);
+// An element id as USD's int64; Error(input) for an id of 2^63 or more, which would not
+// read back.
+std::string int64_id(std::uint64_t id);
+
+// `type name = value` at `depth` for one frame; for several, USD's time samples (the
+// value at each time code), `type name.timeSamples = {code: value, ...}`, one per line.
+std::string sampled(const std::string& type_and_name, const std::vector<std::string>& per_frame,
+                    const std::vector<double>& codes, int depth);
+// "#usda 1.0" and the layer metadata: defaultPrim "World", `doc`, the time code range
+// and rate when `codes` has several frames, metersPerUnit 1 and upAxis "Z" (coordinates
+// are not converted).
+std::string layer_header(const std::string& doc, const std::vector<double>& codes, double codes_per_second);
 
 }  // namespace tessera::geometry::usda

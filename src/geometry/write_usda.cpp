@@ -13,9 +13,8 @@
 //   generic traversals skip them;
 // - elements that cannot be instanced (deformed meshes, tubes) are Mesh prims of their
 //   own in world coordinates under /World/Meshes, named type_id.
+// An animation's layer (write_usda_animated.cpp) reuses the instancer with time samples.
 #include <algorithm>
-#include <cstdint>
-#include <limits>
 
 #include "geometry/geometry_internal.hpp"
 #include "geometry/usda_text.hpp"
@@ -29,6 +28,7 @@ namespace tessera::geometry {
 namespace {
 
 using usda::list;
+using usda::pad;
 using usda::quoted;
 using usda::real;
 using usda::tuple;
@@ -39,11 +39,6 @@ struct Prototype {
     int type = 0;
     std::string name;
 };
-
-// "    " x depth.
-std::string pad(int depth) {
-    return std::string(static_cast<size_t>(depth) * 4, ' ');
-}
 
 // A Mesh prim: triangles, smooth vertex normals, the type's preview colour, no
 // subdivision (USD's default scheme would round the triangles off), and the class name.
@@ -107,19 +102,8 @@ InstancePoses poses_of(const Scene& scene) {
     return p;
 }
 
-// `name = [...]` for a still scene, `name.timeSamples = {t: [...], ...}` for an animation
-// (USD's time samples: the value of the attribute at each time code, here the frame index).
-std::string attribute(const std::string& type_and_name, const std::vector<std::vector<std::string>>& per_frame,
-                      int depth) {
-    if (per_frame.size() == 1) return pad(depth) + type_and_name + " = " + list(per_frame[0]) + "\n";
-    std::string out = pad(depth) + type_and_name + ".timeSamples = {\n";
-    for (size_t f = 0; f < per_frame.size(); ++f)
-        out += pad(depth + 1) + std::to_string(f) + ": " + list(per_frame[f]) + ",\n";
-    return out + pad(depth) + "}\n";
-}
-
 std::string point_instancer(const Scene& scene, const std::vector<Prototype>& prototypes,
-                            const std::vector<Scene>& frames) {
+                            const std::vector<Scene>& frames, const std::vector<double>& codes) {
     std::vector<int> proto_index(scene.meshes.size(), -1);
     for (size_t p = 0; p < prototypes.size(); ++p) proto_index[prototypes[p].mesh] = static_cast<int>(p);
     std::vector<std::string> ids, quath, positions, classes, protos, scales;
@@ -129,7 +113,7 @@ std::string point_instancer(const Scene& scene, const std::vector<Prototype>& pr
         const Quat& q = inst.orientation;
         const std::string wxyz =
             "(" + real(q.w) + ", " + real(q.x) + ", " + real(q.y) + ", " + real(q.z) + ")";
-        ids.push_back(std::to_string(inst.id));
+        ids.push_back(usda::int64_id(inst.id));
         quath.push_back(wxyz);
         positions.push_back(tuple(inst.position));
         classes.push_back(std::to_string(inst.type));
@@ -143,21 +127,21 @@ std::string point_instancer(const Scene& scene, const std::vector<Prototype>& pr
     for (const Prototype& p : prototypes) targets.push_back("</World/Elements/Prototypes/" + p.name + ">");
 
     // An animation's poses: one set per frame (the first scene's when there are no frames).
-    std::vector<std::vector<std::string>> frame_positions{positions}, frame_orientations{quath};
+    std::vector<std::string> frame_positions{list(positions)}, frame_orientations{list(quath)};
     if (frames.size() > 1) {
         frame_positions.clear(), frame_orientations.clear();
         for (const Scene& frame : frames) {
-            InstancePoses p = poses_of(frame);
-            frame_positions.push_back(std::move(p.positions));
-            frame_orientations.push_back(std::move(p.orientations));
+            const InstancePoses p = poses_of(frame);
+            frame_positions.push_back(list(p.positions));
+            frame_orientations.push_back(list(p.orientations));
         }
     }
     const std::string in = pad(2), per_instance = " (interpolation = \"vertex\")\n";
     std::string out = pad(1) + "def PointInstancer \"Elements\"\n" + pad(1) + "{\n";
     out += in + "int64[] ids = " + list(ids) + "\n";
-    out += attribute("quath[] orientations", frame_orientations, 2);
-    out += attribute("quatf[] orientationsf", frame_orientations, 2);
-    out += attribute("point3f[] positions", frame_positions, 2);
+    out += usda::sampled("quath[] orientations", frame_orientations, codes, 2);
+    out += usda::sampled("quatf[] orientationsf", frame_orientations, codes, 2);
+    out += usda::sampled("point3f[] positions", frame_positions, codes, 2);
     out += in + "int[] primvars:tessera:class = " + list(classes) + per_instance;
     out += in + "string[] primvars:tessera:classNames = " + list(class_names) +
            " (interpolation = \"constant\")\n";
@@ -182,7 +166,7 @@ std::string own_meshes(const Scene& scene) {
     for (int i = 0; i < static_cast<int>(scene.instances.size()); ++i) {
         const SceneInstance& inst = scene.instances[i];
         if (inst.instanced) continue;
-        const std::string id = pad(3) + "custom int64 tessera:id = " + std::to_string(inst.id) + "\n";
+        const std::string id = pad(3) + "custom int64 tessera:id = " + usda::int64_id(inst.id) + "\n";
         out += mesh_prim(scene.world_mesh(i), names.unique(instance_name(scene, i)), inst.type,
                          scene.type_names.at(inst.type), id, 2);
     }
@@ -191,49 +175,21 @@ std::string own_meshes(const Scene& scene) {
 
 }  // namespace
 
-namespace {
-
-std::string usda_layer(const Scene& scene, const std::vector<Scene>& frames, double frames_per_second) {
+std::string to_usda(const Scene& scene) {
     size_t instanced = 0;
-    for (const SceneInstance& inst : scene.instances) {
-        instanced += inst.instanced ? 1 : 0;
-        // USD's ids are int64; a larger id would not read back.
-        if (inst.id > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
-            throw Error(ErrorKind::input, "element id " + std::to_string(inst.id) +
-                                              " is too large for USD's int64 ids; use .json or .csv");
-    }
-    std::string out = "#usda 1.0\n(\n";
-    out += "    defaultPrim = \"World\"\n";
-    out += "    doc = " +
-           quoted(std::string("tessera ") + version + ": " + std::to_string(scene.instances.size()) +
-                  " elements, dimension " + std::to_string(scene.dimension) +
-                  (frames.size() > 1 ? ", " + std::to_string(frames.size()) + " frames" : std::string())) +
-           "\n";
-    if (frames.size() > 1) {
-        out += "    endTimeCode = " + std::to_string(frames.size() - 1) + "\n";
-        out += "    startTimeCode = 0\n";
-        out += "    timeCodesPerSecond = " + real(frames_per_second) + "\n";
-    }
-    out += "    metersPerUnit = 1\n";
-    out += "    upAxis = \"Z\"\n)\n\n";
+    for (const SceneInstance& inst : scene.instances) instanced += inst.instanced ? 1 : 0;
+    std::string out = usda::layer_header(std::string("tessera ") + version + ": " +
+                                             std::to_string(scene.instances.size()) + " elements, dimension " +
+                                             std::to_string(scene.dimension),
+                                         {}, 0.0);
     out += "def Xform \"World\"\n{\n";
-    if (instanced > 0) out += point_instancer(scene, prototypes_of(scene), frames);
+    if (instanced > 0) out += point_instancer(scene, prototypes_of(scene), {}, {});
     if (instanced < scene.instances.size()) out += (instanced > 0 ? "\n" : "") + own_meshes(scene);
     return out + "}\n";
 }
 
-}  // namespace
-
-std::string to_usda(const Scene& scene) { return usda_layer(scene, {}, 0.0); }
-
-std::string to_usda_animated(const std::vector<Scene>& frames, double frames_per_second) {
-    if (frames.empty()) throw Error(ErrorKind::internal, "to_usda_animated: no frame");
-    for (const Scene& f : frames)
-        for (const SceneInstance& inst : f.instances)
-            if (!inst.instanced)
-                throw Error(ErrorKind::input, "an animated USD layer holds instanced elements only (rigid types and "
-                                              "particles); write deformed elements' frames as .json or .csv");
-    return usda_layer(frames[0], frames, frames_per_second);
+std::string usda_point_instancer(const std::vector<Scene>& frames, const std::vector<double>& codes) {
+    return point_instancer(frames.at(0), prototypes_of(frames[0]), frames, codes);
 }
 
 }  // namespace tessera::geometry

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "geometry/geometry_internal.hpp"
+#include "geometry/animated_scene.hpp"
 #include "io/io_util.hpp"
 #include "tessera/animation_io.hpp"
 #include "tessera/error.hpp"
@@ -34,13 +34,32 @@ void write_csv(const Animation& data, const RunStats*, const std::string& path, 
     write_file_atomic(path, animation_to_csv(data));
 }
 
-// A USD layer whose instancer poses are time samples, one per frame (docs/format.md, "USD").
+// A scene format of the animation (geometry/animated_scene.hpp): `to_text` of its animated
+// scene, with the file's name on errors about the data, written only once it is whole.
+template <typename ToText>
+void write_scene_file(const Animation& data, const std::string& path, const SaveOptions& options, ToText to_text) {
+    std::string text;
+    try {
+        text = to_text(geometry::build_animated_scene(data, options.geometry));
+    } catch (const Error& e) {
+        if (e.kind() != ErrorKind::input) throw;
+        throw Error(e.kind(), "cannot save animation " + path + ": " + e.what());
+    }
+    write_file_atomic(path, text);
+}
+
+// USD: instancer poses, curve and mesh points as time samples (docs/format.md, "USD").
 void write_usda(const Animation& data, const RunStats*, const std::string& path, const SaveOptions& options) {
-    std::vector<Scene> frames;
-    for (int f = 0; f < data.frame_count(); ++f) frames.push_back(build_scene(data.frame(f), options.geometry));
-    const int n = data.frame_count();
-    const double fps = n > 1 ? (n - 1) / (data.times.back() - data.times.front()) : 24.0;
-    write_file_atomic(path, geometry::to_usda_animated(frames, fps));
+    write_scene_file(data, path, options, [](const auto& scene) { return geometry::to_usda_animated(scene); });
+}
+
+// glTF: node translations and rotations, morph target weights as animation channels.
+void write_gltf(const Animation& data, const RunStats*, const std::string& path, const SaveOptions& options) {
+    write_scene_file(data, path, options, [](const auto& scene) { return geometry::to_gltf_animated(scene, false); });
+}
+
+void write_glb(const Animation& data, const RunStats*, const std::string& path, const SaveOptions& options) {
+    write_scene_file(data, path, options, [](const auto& scene) { return geometry::to_gltf_animated(scene, true); });
 }
 
 // The formats save_animation writes, by extension (lower case): one line per format.
@@ -52,6 +71,8 @@ constexpr AnimationFormat animation_formats[] = {
     {".json", write_json},
     {".csv", write_csv},
     {".usda", write_usda},
+    {".gltf", write_gltf},
+    {".glb", write_glb},
 };
 
 void save_by_extension(const Animation& data, const RunStats* stats, const std::string& path,

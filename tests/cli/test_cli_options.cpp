@@ -9,6 +9,7 @@
 #include "tessera/det.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/grow.hpp"
+#include "tessera/motion_analysis.hpp"
 #include "tessera/option_table.hpp"
 #include "tessera/pcf_synthesis.hpp"
 
@@ -74,6 +75,10 @@ TEST_F(CliOptions, EveryPcfOptionIsAFlagWithItsDefaultDocsAndCheck) {
 
 TEST_F(CliOptions, EveryDynamicOptionIsAFlagWithItsDefaultDocsAndCheck) {
     walk(tessera::dynamic_option_table(), "synth", "--method dynamic");
+}
+
+TEST_F(CliOptions, EveryLowPassOptionIsAFlagWithItsDefaultDocsAndCheck) {
+    walk(tessera::low_pass_option_table(), "analyze", "--decompose");
 }
 
 TEST_F(CliOptions, EveryGrowOptionIsAFlagWithItsDefaultDocsAndCheck) {

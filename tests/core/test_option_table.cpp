@@ -10,6 +10,7 @@
 #include "tessera/error.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/metrics.hpp"
+#include "tessera/motion_analysis.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/option_table.hpp"
 #include "tessera/pcf_synthesis.hpp"
@@ -46,6 +47,7 @@ TEST(OptionTable, NamesAreUniqueSnakeCaseAndSpelledPerFrontEnd) {
     expect_unique_snake_case_names(pcf_analysis_option_table());
     expect_unique_snake_case_names(pair_correlation_option_table());
     expect_unique_snake_case_names(dynamic_option_table());
+    expect_unique_snake_case_names(low_pass_option_table());
     EXPECT_EQ(cli_flag(*find_option(pair_correlation_option_table(), "r_max")), "--r-max");
     const auto& det = det_option_table();
     EXPECT_EQ(cli_flag(*find_option(det, "patch_size")), "--patch-size");

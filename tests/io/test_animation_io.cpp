@@ -513,7 +513,7 @@ TEST_F(IoAnimationFiles, ErrorsForExtensionsAndMissingFiles) {
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_EQ(e.kind(), ErrorKind::option);
-        EXPECT_NE(std::string(e.what()).find("a.png: unsupported extension '.png' (supported: .json, .csv, .usda)"),
+        EXPECT_NE(std::string(e.what()).find("a.png: unsupported extension '.png' (supported: .json, .csv, .usda, .gltf, .glb)"),
                   std::string::npos)
             << e.what();
     }

@@ -1,7 +1,7 @@
 // A strict reader of the USD text layers tessera writes (src/geometry/write_usda.cpp),
 // for the tests: it accepts the subset of .usda the writer uses — layer metadata, prims
 // (def / over, typed or not, with metadata), attributes (custom, uniform, array types,
-// metadata) and relationships — and throws std::runtime_error on anything else: an
+// metadata, time samples) and relationships — and throws std::runtime_error on anything else: an
 // unknown token, an unknown value type, a value that does not match its declared type
 // (point3f must be 3 numbers, quath 4, int an integer), a repeated prim or property.
 // It is not a USD parser; it checks that the writer's output is what it means to be.
@@ -27,8 +27,10 @@ struct Value {
 struct Property {
     std::string type;  // "point3f", "rel" for relationships
     bool array = false, custom = false, uniform = false;
-    Value value;
+    Value value;  // the value; for time samples, the first sample's
     std::map<std::string, Value> metadata;
+    // `name.timeSamples = {code: value, ...}`: the values by time code, in order.
+    std::vector<std::pair<double, Value>> samples;
 };
 
 struct Prim {
@@ -118,7 +120,7 @@ private:
         skip_space();
         if (i_ >= s_.size()) fail("unexpected end of the layer");
         const char c = s_[i_];
-        if (std::string("()[]{},=").find(c) != std::string::npos) return std::string(1, s_[i_++]);
+        if (std::string("()[]{},=:").find(c) != std::string::npos) return std::string(1, s_[i_++]);
         const size_t start = i_;
         if (c == '"') {
             for (++i_; i_ < s_.size() && s_[i_] != '"'; ++i_) {
@@ -295,16 +297,48 @@ private:
         }
         const std::string name = next();
         if (!word_char(name[0])) fail("expected a property name, got '" + name + "'");
+        const bool sampled = i_ < s_.size() && s_[i_] == '.';
+        if (sampled) {
+            ++i_;
+            if (next() != "timeSamples") fail("expected timeSamples after '" + name + ".'");
+        }
         expect("=");
-        prop.value = value();
-        if (prop.array) {
-            if (prop.value.kind != Value::list) fail(name + " must be an array");
-            for (const Value& v : prop.value.items) check_scalar(v, n);
+        if (sampled) {
+            prop.samples = time_samples(prop, n, name);
+            if (prop.samples.empty()) fail(name + " has no time sample");
+            prop.value = prop.samples.front().second;
         } else {
-            check_scalar(prop.value, n);
+            prop.value = value();
+            check_value(prop, n, name, prop.value);
         }
         if (peek() == "(") prop.metadata = metadata();
         if (!p.properties.emplace(name, prop).second) fail("repeated property " + name);
+    }
+
+    void check_value(const Property& prop, int n, const std::string& name, const Value& v) {
+        if (prop.array) {
+            if (v.kind != Value::list) fail(name + " must be an array");
+            for (const Value& item : v.items) check_scalar(item, n);
+        } else {
+            check_scalar(v, n);
+        }
+    }
+
+    // {code: value, ...} with increasing codes and an optional trailing comma.
+    std::vector<std::pair<double, Value>> time_samples(const Property& prop, int n, const std::string& name) {
+        std::vector<std::pair<double, Value>> out;
+        expect("{");
+        while (peek() != "}") {
+            const Value code = value();
+            if (code.kind != Value::number) fail(name + ": a time code must be a number");
+            if (!out.empty() && !(code.x > out.back().first)) fail(name + ": time codes must increase");
+            expect(":");
+            out.emplace_back(code.x, value());
+            check_value(prop, n, name, out.back().second);
+            if (peek() == ",") next();
+        }
+        expect("}");
+        return out;
     }
 
     std::string s_;

@@ -9,7 +9,7 @@ bl_info = {
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
     "location": "File > Import > tessera (.json)",
-    "description": "Import tessera element arrangements (JSON) as instances of the element meshes",
+    "description": "Import tessera element arrangements and animations (JSON) as instances of the element meshes",
     "doc_url": "",
     "category": "Import-Export",
 }
@@ -32,7 +32,7 @@ if bpy is not None:
     from bpy_extras.io_utils import ImportHelper
 
     class ImportTesseraJson(bpy.types.Operator, ImportHelper):
-        """Import a tessera arrangement or exemplar (.json) as instances of the element meshes"""
+        """Import a tessera arrangement, exemplar or animation (.json) as instances of the element meshes"""
 
         bl_idname = "import_scene.tessera_json"
         bl_label = "Import tessera JSON"

@@ -44,26 +44,31 @@ def quat_from_angle_z(angle):
 
 class ElementType:
     """One entry of "types": name (kept exactly), flags, the mesh file (absolute path or
-    None) and the reference layout (list of 3-tuples, or None when derived)."""
+    None), the reference layout (list of 3-tuples, or None when derived), the topology
+    and a sheet's columns."""
 
-    def __init__(self, name, rigid=True, floor=False, mesh=None, reference=None):
+    def __init__(self, name, rigid=True, floor=False, mesh=None, reference=None, topology="automatic", columns=0):
         self.name = name
         self.rigid = rigid
         self.floor = floor
         self.mesh = mesh
         self.reference = reference
+        self.topology = topology  # "automatic", "none", "thread" or "sheet"
+        self.columns = columns  # a sheet's grid columns (sample id = row x columns + column)
 
 
 class Element:
     """One element: index in the file, id, type index, samples (3-tuples; z = 0 in 2D),
     position (the samples' centroid), orientation (w, x, y, z), scale, radius (0 = none),
-    free attributes (name -> value), locked."""
+    free attributes (name -> value), locked; frames: the samples at every frame of an
+    animated file (frames[0] is samples), [samples] otherwise."""
 
-    def __init__(self, index, id, type, samples, orientation, scale, radius, attributes, locked):
+    def __init__(self, index, id, type, samples, orientation, scale, radius, attributes, locked, frames=None):
         self.index = index
         self.id = id
         self.type = type
         self.samples = samples
+        self.frames = frames or [samples]
         n = len(samples)
         self.position = tuple(sum(p[k] for p in samples) / n for k in range(3))
         self.orientation = orientation
@@ -74,12 +79,25 @@ class Element:
 
 
 class Document:
-    def __init__(self, path, dimension, types, elements, attribute_names):
+    """A file's types and elements; times: the frames' time stamps of an animated file
+    (docs/format.md, "Animations (frames)"), None for a still one."""
+
+    def __init__(self, path, dimension, types, elements, attribute_names, times=None):
         self.path = path
         self.dimension = dimension
         self.types = types
         self.elements = elements
         self.attribute_names = attribute_names
+        self.times = times
+
+    def topology(self, type_index):
+        """The type's topology in effect: automatic is none for single-sample elements and
+        thread for multi-sample ones (tessera::effective_topology)."""
+        t = self.types[type_index].topology
+        if t != "automatic":
+            return t
+        first = next((e for e in self.elements if e.type == type_index), None)
+        return "thread" if first is not None and len(first.samples) > 1 else "none"
 
 
 def _point(value, dimension, where):
@@ -133,14 +151,22 @@ def load_document(path):
         reference = None
         if t.get("reference"):
             reference = [_point(p, dimension, f"{where}.reference[{k}]") for k, p in enumerate(t["reference"])]
+        topology = t.get("topology", "automatic")
+        if topology not in ("automatic", "none", "thread", "sheet"):
+            raise TesseraFileError(f"{where}.topology: expected none, thread or sheet, got {topology!r}")
+        columns = t.get("columns", 0)
+        if topology == "sheet" and (not isinstance(columns, int) or isinstance(columns, bool) or columns < 2):
+            raise TesseraFileError(f"{where}.columns: a sheet needs an integer number of columns >= 2")
         by_name[t["name"]] = len(types)
-        types.append(ElementType(t["name"], bool(t.get("rigid", True)), bool(t.get("floor", False)), mesh, reference))
+        types.append(ElementType(t["name"], bool(t.get("rigid", True)), bool(t.get("floor", False)), mesh, reference,
+                                 topology, columns))
     declared = bool(types)
 
     attribute_names = list(doc.get("attributes", []))
     raw = doc.get("elements")
     if not isinstance(raw, list) or not raw:
         raise TesseraFileError(f"{name}: \"elements\" must be a non-empty array")
+    times, frames = _read_frames(doc, name, dimension) if "frames" in doc else (None, None)
     elements = []
     for i, e in enumerate(raw):
         where = f"{name}: elements[{i}]"
@@ -159,9 +185,20 @@ def load_document(path):
                 raise TesseraFileError(f"{where}: unknown element type '{type_name}'")
             by_name[type_name] = len(types)
             types.append(ElementType(type_name))
-        if ("position" in e) == ("samples" in e):
+        element_frames = None
+        if frames is not None:
+            for key in ("position", "samples"):
+                if key in e:
+                    raise TesseraFileError(f"{where}.{key}: not allowed in an animated file "
+                                           "(positions and times are in \"frames\")")
+            if e.get("id") not in frames:
+                raise TesseraFileError(f"{where}: element id {e.get('id')!r} is in no frame "
+                                       "(every frame must hold every element)")
+            element_frames = frames.pop(e["id"])
+            samples = element_frames[0]
+        elif ("position" in e) == ("samples" in e):
             raise TesseraFileError(f"{where}: needs exactly one of \"position\" and \"samples\"")
-        if "position" in e:
+        elif "position" in e:
             samples = [_point(e["position"], dimension, f"{where}.position")]
         else:
             if not isinstance(e["samples"], list) or not e["samples"]:
@@ -188,8 +225,50 @@ def load_document(path):
         if not isinstance(element_id, int) or isinstance(element_id, bool) or element_id < 0:
             raise TesseraFileError(f"{where}.id: must be a non-negative integer")
         elements.append(Element(i, element_id, by_name[type_name], samples, orientation, scale, radius,
-                                attributes, bool(e.get("locked", False))))
-    return Document(path, dimension, types, elements, attribute_names)
+                                attributes, bool(e.get("locked", False)), element_frames))
+    if frames:
+        raise TesseraFileError(f"{name}: frames[0]: element id {next(iter(frames))} is not defined in \"elements\"")
+    return Document(path, dimension, types, elements, attribute_names, times)
+
+
+def _read_frames(doc, name, dimension):
+    """The time stamps and, by element id, the samples at every frame of an animated file.
+    Checks what the import relies on: increasing times, every element in every frame with
+    the same number of samples."""
+    raw = doc["frames"]
+    if not isinstance(raw, list) or not raw:
+        raise TesseraFileError(f"{name}: \"frames\" must be a non-empty array")
+    times, by_id = [], {}
+    for f, frame in enumerate(raw):
+        where = f"{name}: frames[{f}]"
+        if not isinstance(frame, dict) or not isinstance(frame.get("elements"), list):
+            raise TesseraFileError(f"{where}: expected {{\"time\": T, \"elements\": [...]}}")
+        time = _number(frame.get("time"), f"{where}.time")
+        if times and not time > times[-1]:
+            raise TesseraFileError(f"{where}.time: time stamps must strictly increase ({times[-1]}, then {time})")
+        times.append(time)
+        seen = set()
+        for k, e in enumerate(frame["elements"]):
+            at = f"{where}.elements[{k}]"
+            element_id = e.get("id") if isinstance(e, dict) else None
+            if not isinstance(element_id, int) or isinstance(element_id, bool):
+                raise TesseraFileError(f"{at}.id: a frame element needs the integer id of its element")
+            if element_id in seen or (f > 0 and element_id not in by_id):
+                raise TesseraFileError(f"{at}: element id {element_id!r} is repeated or not in frames[0]")
+            seen.add(element_id)
+            if isinstance(e.get("samples"), list) and e["samples"]:
+                samples = [_point(p, dimension, f"{at}.samples[{j}]") for j, p in enumerate(e["samples"])]
+            else:
+                samples = [_point(e.get("position"), dimension, f"{at}.position")]
+            trail = by_id.setdefault(element_id, [])
+            if trail and len(samples) != len(trail[0]):
+                raise TesseraFileError(f"{at}: element id {element_id} has {len(samples)} samples here but "
+                                       f"{len(trail[0])} in frames[0]")
+            trail.append(samples)
+        if len(seen) != len(by_id):
+            raise TesseraFileError(f"{where}: an element of frames[0] is missing (every frame must hold the same "
+                                   "elements)")
+    return times, by_id
 
 
 def derived_reference(element):

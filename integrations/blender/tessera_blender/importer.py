@@ -1,7 +1,7 @@
-# tessera_blender/importer.py — a tessera JSON scene (exemplar or synthesized
-# arrangement) as Blender objects: one collection per element class holding the class's
-# prototype, and one object per element placed by the element's pose. Usable without
-# the operator:
+# tessera_blender/importer.py — a tessera JSON scene (exemplar, synthesized arrangement or
+# animation) as Blender objects: one collection per element class holding the class's
+# prototype, and one object per element placed by the element's pose (keyed per frame for
+# an animation, animation.py). Usable without the operator:
 #
 #     from tessera_blender.importer import import_tessera_json
 #     result = import_tessera_json("out/scenes/bananas_3d.json")
@@ -39,13 +39,15 @@ class ImportResult:
     prototypes   class name -> the class's collection (inside the hidden "tessera prototypes")
     objects      one object per element, in the file's element order
     warnings     messages about what could not be built exactly as tessera would
+    frames       an animated file's keyed frame numbers, one per time stamp (None when still)
     """
 
-    def __init__(self, collection, prototypes, objects, warnings):
+    def __init__(self, collection, prototypes, objects, warnings, frames=None):
         self.collection = collection
         self.prototypes = prototypes
         self.objects = objects
         self.warnings = warnings
+        self.frames = frames
 
 
 def object_name(type_name, element_id):
@@ -75,6 +77,8 @@ def import_tessera_json(path, collection_name=None, instancing="collection", sce
                      per-element meshes of deformable types; when not given and the file has
                      deformable types with meshes, the tessera executable (`tessera`,
                      $TESSERA_CLI or PATH) writes one to a temporary directory
+    An animated file (with "frames") is built at frame 0 and keyed at every frame
+    (tessera_blender.animation); the scene's frame range becomes the animation's.
     Raises TesseraFileError (a ValueError) naming the file for data that cannot be read."""
     if instancing not in INSTANCING_MODES:
         raise ValueError(f"instancing must be one of {', '.join(INSTANCING_MODES)}, got {instancing!r}")
@@ -91,7 +95,13 @@ def import_tessera_json(path, collection_name=None, instancing="collection", sce
                 meshes[t.name] = tdata.read_mesh(t.mesh)
             except TesseraFileError as e:
                 raise TesseraFileError(f"element type '{t.name}': {e}") from None
-    deformed = _deformed_meshes(doc, scene_obj, tessera, warnings)
+    shapes = [_sample_shape(doc, i) for i in range(len(doc.types))]
+    for e in doc.elements:
+        columns = doc.types[e.type].columns
+        if shapes[e.type] == "grid" and (len(e.samples) % columns or len(e.samples) < 2 * columns):
+            raise TesseraFileError(f"{doc.path}: type '{doc.types[e.type].name}' is a sheet but its "
+                                   f"{len(e.samples)} samples are not a grid of {columns} columns and 2 or more rows")
+    deformed = _deformed_meshes(doc, scene_obj, tessera, warnings, shapes)
 
     top = bpy.data.collections.new(collection_name or f"tessera {stem}")
     context.scene.collection.children.link(top)
@@ -148,14 +158,15 @@ def import_tessera_json(path, collection_name=None, instancing="collection", sce
         if e.type in class_mesh and t.reference and t.rigid:
             mean = mathutils.Vector([sum(p[k] for p in t.reference) / len(t.reference) for k in range(3)])
             location = location - e.scale * (rotation @ mean)
-        if e.type in class_mesh and not t.rigid and e.index in deformed:
+        shape = shapes[e.type]
+        if shape is None and e.type in class_mesh and not t.rigid and e.index in deformed:
             # A mesh of its own: tessera's deformed mesh, brought into the element's frame.
             is_deformed = True
             inverse = rotation.conjugated()
             world, faces = deformed[e.index]
             local = [(inverse @ (mathutils.Vector(v) - location)) / e.scale for v in world]
             obj = bpy.data.objects.new(name, _new_mesh(name, local, faces, material))
-        elif e.type in class_mesh:
+        elif shape is None and e.type in class_mesh:
             if not t.rigid:
                 is_deformed = False  # no deformed mesh available: the rest shape, posed
             elif len(e.samples) > 1:
@@ -183,8 +194,12 @@ def import_tessera_json(path, collection_name=None, instancing="collection", sce
                     prototype["tessera_class"] = t.name
                     prototypes[t.name].objects.link(prototype)
                 obj = bpy.data.objects.new(name, sphere_meshes[key])
+            elif shape == "grid":
+                obj = bpy.data.objects.new(name, _grid_mesh(name, e, location, rotation, t.columns, material))
+                obj["tessera_shape"] = "grid"
             else:
                 obj = bpy.data.objects.new(name, _tube_curve(name, e, location, rotation, radius, material))
+                obj["tessera_shape"] = "curve"
         obj.location = location
         obj.rotation_mode = "QUATERNION"
         obj.rotation_quaternion = rotation
@@ -203,10 +218,17 @@ def import_tessera_json(path, collection_name=None, instancing="collection", sce
         element_collections[e.type].objects.link(obj)
         objects.append(obj)
 
+    frames = None
+    if doc.times is not None and len(doc.times) > 1:
+        from . import animation  # needs numpy, which Blender ships; still files do not
+
+        if any(not t.rigid and i in class_mesh and shapes[i] is None for i, t in enumerate(doc.types)):
+            warnings.append("deformable elements keep their frame-0 shape in an animation; only their pose moves")
+        frames = animation.add_keyframes(doc, objects, context)
     context.view_layer.update()
     for w in warnings:
         print("tessera import: warning: " + w)
-    return ImportResult(top, prototypes, objects, warnings)
+    return ImportResult(top, prototypes, objects, warnings, frames)
 
 
 # -- helpers -------------------------------------------------------------------------
@@ -313,6 +335,32 @@ def _icosphere(radius, subdivisions):
     return [u * radius for u in unit], faces
 
 
+def _sample_shape(doc, type_index):
+    """How a type is drawn through its samples: "grid" for sheets without a mesh (and in
+    animated files without a rigid mesh), "curve" for threads without a rigid mesh in
+    animated files, as tessera's animated USD and glTF draw them; None otherwise (a mesh,
+    a sphere, or a still file's tube)."""
+    t = doc.types[type_index]
+    animated = doc.times is not None
+    if t.mesh and (t.rigid or not animated):
+        return None
+    topology = doc.topology(type_index)
+    if topology == "sheet":
+        return "grid"
+    return "curve" if topology == "thread" and animated else None
+
+
+def _grid_mesh(name, element, location, rotation, columns, material):
+    """The quads of a sheet's sample grid (sample id = row x columns + column), in the
+    element's frame, all wound alike: (r, c), (r, c + 1), (r + 1, c + 1), (r + 1, c)."""
+    inverse = rotation.conjugated()
+    vertices = [(inverse @ (mathutils.Vector(p) - location)) / element.scale for p in element.samples]
+    rows = len(vertices) // columns
+    faces = [(a, a + 1, a + columns + 1, a + columns)
+             for a in (r * columns + c for r in range(rows - 1) for c in range(columns - 1))]
+    return _new_mesh(name, vertices, faces, material)
+
+
 def _tube_curve(name, element, location, rotation, radius, material):
     """A poly curve through the samples (in the element's frame) with a round bevel of
     the tube's radius: the default shape of multi-sample elements without a mesh."""
@@ -331,11 +379,13 @@ def _tube_curve(name, element, location, rotation, radius, material):
     return curve
 
 
-def _deformed_meshes(doc, scene_obj, tessera, warnings):
+def _deformed_meshes(doc, scene_obj, tessera, warnings, shapes):
     """Element index -> (world vertices, faces) of every element of a deformable type with a
-    mesh, from an OBJ scene written by tessera (given, or written now by the tessera
-    executable). Empty, with a warning, when there is none."""
-    wanted = [e for e in doc.elements if doc.types[e.type].mesh and not doc.types[e.type].rigid]
+    mesh (not drawn through its samples, `shapes`), from an OBJ scene written by tessera
+    (given, or written now by the tessera executable; of frame 0 for an animated file).
+    Empty, with a warning, when there is none."""
+    wanted = [e for e in doc.elements
+              if doc.types[e.type].mesh and not doc.types[e.type].rigid and shapes[e.type] is None]
     if not wanted:
         return {}
     with tempfile.TemporaryDirectory(prefix="tessera-blender-") as tmp:

@@ -3,7 +3,8 @@
 # `blender_import`): synthesizes two example scenes with the built CLI as `make demo`
 # does (scripts/demo: bananas_3d with physics, spaghetti_3d on the plate), then imports
 # them, a fixture of mixed element kinds and three exemplars (2D and 3D) in Blender and
-# checks the result (check_import.py).
+# checks the result (check_import.py); then animated files keyed per frame
+# (check_animation_import.py).
 #
 #   run_import_test.sh TESSERA_CLI SOURCE_DIR WORK_DIR
 #
@@ -59,3 +60,10 @@ TESSERA_CLI=$cli blender --background --factory-startup --python-exit-code 1 \
   --python "$src/integrations/blender/tests/check_import.py" -- \
   "$work/bananas_3d.json" "$work/spaghetti_3d.json" "$src/integrations/blender/tests/data/mixed_3d.json" \
   "$scenes/carrots_2d.json" "$src/examples/two_class_2d.json" "$src/examples/sticks_2d.json"
+
+# Animated files, keyed per frame: a fixture of every element kind (written by the check),
+# a synthesized animation and its exemplar.
+"$cli" synth "$src/examples/dynamic/drifting_lattice_2d.json" -o "$work/drift_anim.json" --frames 6 --scale 1.2 --seed 1 --quiet
+blender --background --factory-startup --python-exit-code 1 \
+  --python "$src/integrations/blender/tests/check_animation_import.py" -- \
+  "$work" "$work/drift_anim.json" "$src/examples/dynamic/drifting_lattice_2d.json"

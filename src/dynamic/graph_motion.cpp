@@ -1,0 +1,143 @@
+// dynamic/graph_motion.cpp — graph synthesis (section 4.3): a still exemplar enriched with
+// motion. The graph of its neighbourhoods (graph_nodes), a motion path per sample
+// (graph_path, Eq. 13), the neighbourhood blended along it (path_blend) and the positions
+// solved frame by frame (graph_solve, Eq. 7).
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/parallel.hpp"
+#include "dynamic/graph_nodes.hpp"
+#include "dynamic/graph_path.hpp"
+#include "dynamic/graph_solve.hpp"
+#include "dynamic/path_blend.hpp"
+#include "tessera/error.hpp"
+#include "tessera/graph_motion.hpp"
+#include "tessera/metrics.hpp"
+
+namespace tessera {
+
+namespace {
+
+using namespace dynamic;
+
+// A still has no time unit: its enriched frames are one unit apart, as synthesize_dynamic
+// spaces a one-frame exemplar's, so that a flow moves a still as far per frame with graph
+// synthesis as without.
+constexpr double frame_time = 1.0;
+
+void check_still(const Exemplar& still) {
+    still.validate("exemplar");
+    if (still.has_multi_sample_elements())
+        throw Error(ErrorKind::input, "exemplar: graph synthesis takes single-sample elements (particles, agents)");
+    if (still.samples.size() < 2) throw Error(ErrorKind::input, "exemplar: graph synthesis needs at least 2 elements");
+}
+
+// The metric's parameters as the dynamic method resolves them, for one frame: the 1-ring
+// radius, input neighbourhoods one spacing further, a pair costing at most a spacing squared.
+StParams graph_params(const Exemplar& still, const GraphMotionOptions& options) {
+    StParams p;
+    p.dimension = still.dimension;
+    p.temporal = 1;
+    p.spacing = nearest_neighbor_distances(still, options.threads).mean;
+    if (!(p.spacing > 0.0)) throw Error(ErrorKind::input, "exemplar: its elements have no spacing (all coincide)");
+    p.radius = options.radius > 0.0 ? options.radius : 1.5 * p.spacing;
+    p.input_radius = p.radius + p.spacing;
+    p.cap2 = p.spacing * p.spacing;
+    p.alpha = p.cap2;
+    return p;
+}
+
+// Every sample's motion path and the tracks of its neighbours along it.
+std::vector<PathTracks> plan_paths(const InputFrames& frames, const NeighbourhoodGraph& graph, const StParams& params,
+                                   const GraphMotionOptions& options, GraphMotionStats& stats) {
+    const int n = frames.size();
+    std::vector<MotionPath> paths(n);
+    std::vector<PathTracks> tracks(n);
+    std::vector<MetricScratch> scratch(core::resolve_threads(options.threads));
+    // The paper's fixed n: Eq. 13 over paths of any length prefers the direct one (see
+    // docs/dynamic.md), which would make every motion a single morph s_a -> s_b.
+    const AnnealSettings settings{options.path_length, options.path_length, options.alpha, options.anneal_iterations,
+                                  options.seed};
+    core::parallel_for(n, options.threads, [&](int begin, int end, int thread) {
+        for (int s = begin; s < end; ++s) {
+            paths[s] = anneal_path(graph, s, settings);
+            tracks[s] = path_tracks(frames, spatial_neighbourhood(frames, s, params.radius), paths[s].nodes, params,
+                                    scratch[thread]);
+        }
+    });
+    int with_path = 0;
+    for (const MotionPath& p : paths) {
+        if (p.nodes.size() < 2) {
+            ++stats.still_samples;
+            continue;
+        }
+        ++with_path;
+        stats.direct_energy += p.direct_energy, stats.path_energy += p.energy;
+        stats.path_steps += static_cast<double>(p.nodes.size() - 1);
+        stats.anneal_bound_hits += p.at_bound ? 1 : 0;
+    }
+    if (with_path > 0) stats.direct_energy /= with_path, stats.path_energy /= with_path, stats.path_steps /= with_path;
+    return tracks;
+}
+
+// Each sample's predicted neighbour offsets at frame f: its tracks blended at u = n f / (F - 1),
+// so every path is walked from s_a (frame 0: the still) to s_b (the last frame).
+void predict_frame(const std::vector<PathTracks>& tracks, const std::vector<SplineBlend>& splines,
+                   const FrameSolver& solver, int f, int frames, int threads, std::vector<Vec3>& predicted) {
+    core::parallel_for(static_cast<int>(tracks.size()), threads, [&](int begin, int end, int) {
+        double w[max_path_steps + 1];
+        for (int s = begin; s < end; ++s) {
+            const SplineBlend& spline = splines[tracks[s].nodes - 1];
+            spline.weights(double(tracks[s].nodes - 1) * f / (frames - 1), w);
+            blend_tracks(tracks[s], w, predicted.data() + solver.first(s));
+        }
+    });
+}
+
+}  // namespace
+
+Animation enrich_by_graph(const Exemplar& still, const GraphMotionOptions& options, GraphMotionStats* stats_out) {
+    check_options(graph_motion_option_table(), options);
+    check_still(still);
+    const auto start = std::chrono::steady_clock::now();
+    GraphMotionStats stats;
+    Animation result = animation_from_exemplar(still, still.samples.front().time);
+    const StParams params = graph_params(still, options);
+    const InputFrames frames(result, params, options.threads);
+    const NeighbourhoodGraph graph(frames, params, options.max_nodes, options.neighbours, options.seed, options.threads);
+    stats.nodes = static_cast<int>(graph.nodes().size());
+    stats.delta = graph.delta();
+    const std::vector<PathTracks> tracks = plan_paths(frames, graph, params, options, stats);
+
+    std::vector<SplineBlend> splines;
+    for (int nodes = 1; nodes <= max_path_steps + 1; ++nodes) splines.emplace_back(nodes);
+    const FrameSolver solver(tracks);
+    std::vector<Vec3> predicted(solver.track_count());
+    std::vector<Vec3> positions(result.positions);
+    double travelled = 0.0;
+    for (int f = 1; f < options.frames; ++f) {
+        predict_frame(tracks, splines, solver, f, options.frames, options.threads, predicted);
+        const std::vector<Vec3> before = positions;
+        // Converged when no sample moves 1/200 of a spacing in a sweep (a frame moves them
+        // about a tenth of a spacing).
+        if (solver.solve(predicted, positions, still.domain, options.sweeps, 5e-3 * params.spacing, options.threads) < 0)
+            ++stats.sweep_bound_hits;
+        for (size_t s = 0; s < positions.size(); ++s) travelled += norm(positions[s] - before[s]);
+        result.add_frame(result.times.front() + f * frame_time, positions);
+    }
+    stats.mean_speed = travelled / (double(options.frames - 1) * positions.size() * params.spacing);
+    if (stats.anneal_bound_hits > 0)
+        stats.notes.push_back("graph synthesis: " + std::to_string(stats.anneal_bound_hits) +
+                              " motion paths were still accepting moves when anneal_iterations (" +
+                              std::to_string(options.anneal_iterations) + ") ran out");
+    if (stats.sweep_bound_hits > 0)
+        stats.notes.push_back("graph synthesis: " + std::to_string(stats.sweep_bound_hits) +
+                              " frames were still moving when the Jacobi sweeps (" + std::to_string(options.sweeps) +
+                              ") ran out");
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (stats_out) *stats_out = stats;
+    return result;
+}
+
+}  // namespace tessera

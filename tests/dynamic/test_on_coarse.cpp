@@ -1,0 +1,125 @@
+// All-frame synthesis on a coarse motion (synthesize_on_coarse): noodles follow their coarse
+// swing and keep their sample spacing; paper sheets keep their grid (no flipped quad) and
+// their edge lengths; the exemplar's detail is carried over; determinism; bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "tessera/animation_io.hpp"
+#include "tessera/dynamic.hpp"
+#include "tessera/error.hpp"
+
+namespace {
+
+using namespace tessera;
+
+Animation example(const std::string& name) {
+    return load_animation(std::string(TESSERA_SOURCE_DIR) + "/examples/dynamic/" + name + ".json");
+}
+
+// Largest |length / reference - 1| over the thread segments of every element and frame,
+// the reference being the element's mean segment length in frame 0.
+double worst_thread_strain(const Animation& a) {
+    double worst = 0.0;
+    for (const Element& e : a.structure.elements) {
+        double mean = 0.0;
+        for (int k = 0; k + 1 < e.sample_count; ++k)
+            mean += norm(a.at(0, e.first_sample + k + 1) - a.at(0, e.first_sample + k));
+        mean /= e.sample_count - 1;
+        for (int f = 0; f < a.frame_count(); ++f)
+            for (int k = 0; k + 1 < e.sample_count; ++k) {
+                const double l = norm(a.at(f, e.first_sample + k + 1) - a.at(f, e.first_sample + k));
+                worst = std::max(worst, std::abs(l / mean - 1.0));
+            }
+    }
+    return worst;
+}
+
+double rms_offset(const Animation& a, const Animation& b) {
+    double sum = 0.0;
+    for (size_t k = 0; k < a.positions.size(); ++k) sum += squared_norm(a.positions[k] - b.positions[k]);
+    return std::sqrt(sum / a.positions.size());
+}
+
+DynamicOptions options(int threads = 2) {
+    DynamicOptions o;
+    o.seed = 3;
+    o.threads = threads;
+    return o;
+}
+
+TEST(DynamicOnCoarse, NoodlesFollowTheirCoarseSwingAndKeepTheirSpacing) {
+    const Animation exemplar = example("noodles_2d"), coarse = example("noodles_coarse_2d");
+    const AnimatedArrangement out = synthesize_on_coarse(exemplar, coarse, options());
+    ASSERT_EQ(out.frame_count(), coarse.frame_count());
+    ASSERT_EQ(out.sample_count(), coarse.sample_count());
+    EXPECT_LT(worst_thread_strain(out), 0.05);
+    // Detail was laid on: the output is off its coarse motion by about the exemplar's kinks
+    // (amplitude ~0.07-0.1), yet no sample strays more than a few of them.
+    const double rms = rms_offset(out, coarse);
+    EXPECT_GT(rms, 0.03);
+    EXPECT_LT(rms, 0.3);
+    // Every noodle follows its coarse path: its centroid stays near the coarse one.
+    for (int f = 0; f < out.frame_count(); f += 7)
+        for (const Element& e : out.structure.elements) {
+            Vec3 a, b;
+            for (int k = 0; k < e.sample_count; ++k)
+                a += out.at(f, e.first_sample + k), b += coarse.at(f, e.first_sample + k);
+            EXPECT_LT(norm(a - b) / e.sample_count, 0.3) << "frame " << f;
+        }
+}
+
+TEST(DynamicOnCoarse, SheetsKeepTheirGridWithoutFlippedQuads) {
+    const Animation exemplar = example("paper_3d"), coarse = example("paper_coarse_3d");
+    const AnimatedArrangement out = synthesize_on_coarse(exemplar, coarse, options());
+    const int columns = out.structure.types[0].sheet_columns;
+    int flipped = 0, quads = 0;
+    double worst = 0.0;
+    for (int f = 0; f < out.frame_count(); ++f)
+        for (const Element& e : out.structure.elements)
+            for (int r = 0; r + 1 < e.sample_count / columns; ++r)
+                for (int c = 0; c + 1 < columns; ++c) {
+                    const int s = e.first_sample + r * columns + c;
+                    const auto normal = [&](const Animation& a) {
+                        return cross(a.at(f, s + 1) - a.at(f, s), a.at(f, s + columns) - a.at(f, s));
+                    };
+                    flipped += dot(normal(out), normal(coarse)) <= 0.0;
+                    ++quads;
+                    const double rest = norm(coarse.at(0, s + 1) - coarse.at(0, s));
+                    worst = std::max(worst, std::abs(norm(out.at(f, s + 1) - out.at(f, s)) / rest - 1.0));
+                }
+    EXPECT_EQ(flipped, 0) << "of " << quads;
+    // Flutter makes the sheet a little longer than its flat coarse (the exemplar's stretch).
+    EXPECT_LT(worst, 0.05);
+    EXPECT_GT(rms_offset(out, coarse), 0.01);
+}
+
+TEST(DynamicOnCoarse, SameBitsForEveryThreadCount) {
+    const Animation exemplar = example("noodles_2d"), coarse = example("noodles_coarse_2d");
+    const AnimatedArrangement one = synthesize_on_coarse(exemplar, coarse, options(1));
+    for (int threads : {2, 3}) {
+        const AnimatedArrangement other = synthesize_on_coarse(exemplar, coarse, options(threads));
+        EXPECT_TRUE(one.positions == other.positions) << threads << " threads";
+    }
+}
+
+TEST(DynamicOnCoarse, RejectsACoarseMotionTheExemplarCannotDress) {
+    const Animation exemplar = example("noodles_2d");
+    Animation coarse = example("noodles_coarse_2d");
+    coarse.structure.types[0].name = "spaghetti";
+    try {
+        synthesize_on_coarse(exemplar, coarse, options());
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::input);
+        EXPECT_NE(std::string(e.what()).find("type 'spaghetti' is not in the exemplar"), std::string::npos);
+    }
+    EXPECT_THROW(synthesize_on_coarse(exemplar, example("paper_coarse_3d"), options()), Error);
+    DynamicOptions bad = options();
+    bad.topology_size = 1;
+    EXPECT_THROW(synthesize_on_coarse(exemplar, example("noodles_coarse_2d"), bad), Error);
+}
+
+}  // namespace
