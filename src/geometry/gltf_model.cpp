@@ -4,6 +4,8 @@
 #include "geometry/gltf_model.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <limits>
 
 #include "geometry/geometry_internal.hpp"
@@ -122,6 +124,19 @@ void add_element_nodes(tinygltf::Model& model, const Scene& scene, const std::ve
         }
         model.nodes.push_back(node);
     }
+}
+
+void add_root(tinygltf::Model& model) {
+    tinygltf::Node up;
+    up.name = "tessera z-up";
+    up.rotation = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};  // (x, y, z, w): -90 degrees about x
+    up.children.resize(model.nodes.size());
+    std::iota(up.children.begin(), up.children.end(), 0);
+    model.nodes.push_back(up);
+    tinygltf::Scene root;
+    root.nodes = {static_cast<int>(model.nodes.size()) - 1};
+    model.scenes.push_back(root);
+    model.defaultScene = 0;
 }
 
 }  // namespace tessera::geometry::gltf

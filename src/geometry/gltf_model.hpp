@@ -40,4 +40,8 @@ void add_element_nodes(tinygltf::Model& model, const Scene& scene, const std::ve
 // and required when there is such a node.
 void add_instancing_nodes(tinygltf::Model& model, const Scene& scene, const std::vector<int>& shared);
 
+// Adds the root node that turns tessera's z-up into glTF's y-up, parent of every node so
+// far, and the scene holding it (the default scene).
+void add_root(tinygltf::Model& model);
+
 }  // namespace tessera::geometry::gltf

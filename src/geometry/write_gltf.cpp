@@ -36,16 +36,7 @@ std::string to_gltf(const Scene& scene, bool binary, GltfInstancing instancing) 
         gltf::add_element_nodes(model, scene, shared, /*with_shared=*/true);
     }
 
-    tinygltf::Node up;
-    up.name = "tessera z-up";
-    up.rotation = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};  // (x, y, z, w): -90 degrees about x
-    up.children.resize(model.nodes.size());
-    std::iota(up.children.begin(), up.children.end(), 0);
-    model.nodes.push_back(up);
-    tinygltf::Scene root;
-    root.nodes = {static_cast<int>(model.nodes.size()) - 1};
-    model.scenes.push_back(root);
-    model.defaultScene = 0;
+    gltf::add_root(model);
 
     std::ostringstream out;
     tinygltf::TinyGLTF writer;

@@ -91,19 +91,6 @@ tinygltf::Node morph_node(tinygltf::Model& model, const AnimatedScene& scene, in
     return node;
 }
 
-// The root node turning tessera's z-up into glTF's y-up, as in still scenes, and the scene.
-void add_root(tinygltf::Model& model) {
-    tinygltf::Node up;
-    up.name = "tessera z-up";
-    up.rotation = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};  // (x, y, z, w): -90 degrees about x
-    up.children.resize(model.nodes.size());
-    std::iota(up.children.begin(), up.children.end(), 0);
-    model.nodes.push_back(up);
-    tinygltf::Scene root;
-    root.nodes = {static_cast<int>(model.nodes.size()) - 1};
-    model.scenes.push_back(root);
-    model.defaultScene = 0;
-}
 
 }  // namespace
 
@@ -126,7 +113,7 @@ std::string to_gltf_animated(const AnimatedScene& scene, bool binary) {
                                   ? instance_node(model, scene, k++, shared, channels)
                                   : morph_node(model, scene, e, channels));
     model.animations.push_back(channels.animation);
-    add_root(model);
+    gltf::add_root(model);
 
     std::ostringstream out;
     tinygltf::TinyGLTF writer;
