@@ -8,6 +8,9 @@ swirl_particles_2d.json   Poisson-disk particles (radius 0.5 exclusion, in 10 x 
                           space, so that neighbours swirl together: the detail motion that a
                           global flow carries past an obstacle in the demo.
 
+fish_school_2d.json       a loose school of fish at rest on average, each darting along the
+                          school's heading and weaving across it, for the demo's turning flow.
+
 obstacle_channel.json     (written by hand) a polygon domain: a 30 x 15 channel with a round
                           obstacle of radius 2.5 at (10, 7.3), for the demo's particles
                           carried past it by a flow.
@@ -86,6 +89,28 @@ def swirl_particles(seed=5, size=10.0, frames=32):
           2, ([-0.2, -0.2], [size + 0.2, size + 0.2]), ["grain"], tracks, 1 / 24)
 
 
+def fish_school(seed=9, size=10.0, frames=32):
+    """A loose school: fish about 1 apart, each darting back and forth along the school's
+    heading (x) and weaving across it, in loose step with its neighbours; at rest on average,
+    so that a (turning) flow carries the school."""
+    rng = random.Random(seed)
+    tracks = []
+    for (x, y) in poisson_disk(rng, size, 0.9):
+        phase = 2 * math.pi * y / 4.0 + 0.6 * rng.random()
+        dart = rng.uniform(0.10, 0.18)
+        path = []
+        for f in range(frames):
+            w = 2 * math.pi * f / 12 + phase
+            path.append((x + dart * math.sin(w), y + 0.08 * math.sin(2 * w + 1.0)))
+        tracks.append(("fish", path))
+    write("fish_school_2d.json",
+          "A loose school of fish (Poisson disk, exclusion 0.9) at rest on average: each darts along x "
+          "(amplitude 0.10-0.18, period 12 frames) and weaves across (0.08, period 6), in loose step with its "
+          "neighbours; examples/dynamic/make_examples.py",
+          2, ([-0.2, -0.2], [size + 0.2, size + 0.2]), ["fish"], tracks, 1 / 12)
+
+
 if __name__ == "__main__":
     drifting_lattice()
     swirl_particles()
+    fish_school()

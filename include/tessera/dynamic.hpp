@@ -58,6 +58,9 @@ struct DynamicOptions {
     // Global flow (units per unit of time) added to every element's motion: the coarse
     // motion the exemplar's detail motion rides on.
     Vec3 flow;
+    // Degrees per unit of time the flow turns about the z axis (a school of fish wheeling);
+    // 0 = a steady flow.
+    double flow_turn = 0.0;
     // An element the motion carries out of the domain re-enters on the opposite side of the
     // domain's bounding box (periodic: a steady flow keeps the domain filled); off = it is put
     // back at the nearest point inside.

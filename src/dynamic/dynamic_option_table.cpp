@@ -68,6 +68,10 @@ void add_solver_rows(OptionTable<O>& t) {
         [](O& o, const std::string& text, const OptionContext& c) {
             o.flow = text.empty() ? Vec3{} : parse_flow(text, c.as_written);
         }));
+    t.push_back(number_row<O>("flow_turn",
+                              "Degrees per unit of time the flow turns about the z axis (a school wheeling); "
+                              "0 = a steady flow.",
+                              [](auto& o) -> auto& { return o.flow_turn; }, any_finite()));
     t.push_back(flag_row<O>("wrap",
                             "An element carried out of the domain re-enters on the opposite side of its bounding "
                             "box (periodic); off = it is put back at the nearest point inside.",

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -191,6 +192,15 @@ private:
     SearchSettings settings_;
 };
 
+// The flow at time t after the first frame: turned by flow_turn degrees per unit of time
+// about z (taken at the middle of each frame step, so a turn is not late by half a step).
+Vec3 flow_at(const DynamicOptions& options, double t) {
+    if (options.flow_turn == 0.0) return options.flow;
+    const double a = options.flow_turn * std::numbers::pi / 180.0 * t;
+    const Vec3& v = options.flow;
+    return {v.x * std::cos(a) - v.y * std::sin(a), v.x * std::sin(a) + v.y * std::cos(a), v.z};
+}
+
 // The exemplar's mean frame step: the output's frames are that far apart.
 double frame_interval(const Animation& exemplar) {
     const int n = exemplar.frame_count();
@@ -229,7 +239,7 @@ AnimatedArrangement synthesize_dynamic(const Animation& given, const Domain& dom
     result.stats.init_seconds = elapsed();  // the first frame, the input index and the k-coherence sets
     for (int f = 1; f < frames; ++f) {
         const double frame_start = elapsed();
-        const double energy = run.next_frame(options.flow * dt);
+        const double energy = run.next_frame(flow_at(options, (f - 0.5) * dt) * dt);
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - frame_start);
         result.add_frame(exemplar.times.front() + f * dt, run.positions());

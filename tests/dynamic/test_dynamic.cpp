@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/rng.hpp"
 #include "dynamic/dynamic_fixtures.hpp"
@@ -169,6 +170,30 @@ TEST(Dynamic, FlowWithWrapKeepsTheDomainFilledWithoutOverlaps) {
         // Elements that re-enter across the border meet the others without landing on them:
         // neighbourhoods see through the periodic border.
         EXPECT_GT(closest_pair(frame), 0.6 * closest_in) << "frame " << f;
+    }
+}
+
+TEST(Dynamic, ATurningFlowTurnsTheWholeMotion) {
+    const Animation ex = drifting_lattice(10, 10, 12, {0, 0, 0}, 0.05);
+    DynamicOptions o;
+    o.frames = 24;
+    o.flow = {2.0, 0, 0};
+    o.flow_turn = 90.0;  // degrees per unit of time; frames are 0.1 apart
+    o.wrap = true;
+    const AnimatedArrangement out = synthesize_dynamic(ex, output_box, o);
+    const Vec3 size = output_box.bounds().size();
+    for (int f : {3, 12, 23}) {
+        Vec3 mean;
+        for (int s = 0; s < out.sample_count(); ++s) {
+            Vec3 d = out.at(f, s) - out.at(f - 1, s);
+            for (int k = 0; k < 2; ++k) d[k] -= size[k] * std::round(d[k] / size[k]);  // across the wrap
+            mean += d / out.sample_count();
+        }
+        const double expected = 90.0 * (f - 0.5) * 0.1;
+        double angle = std::atan2(mean.y, mean.x) * 180.0 / std::numbers::pi;
+        angle -= 360.0 * std::round((angle - expected) / 360.0);
+        EXPECT_NEAR(angle, expected, 12.0) << "frame " << f;
+        EXPECT_NEAR(norm(mean), 0.2, 0.05) << "frame " << f;
     }
 }
 
