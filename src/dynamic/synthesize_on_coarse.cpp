@@ -42,6 +42,9 @@ std::vector<int> coarse_types_in_exemplar(const Animation& exemplar, const Anima
         if (a != b)
             throw Error(ErrorKind::input, "coarse: type '" + name + "' is a " + topology_text(b) +
                                               " but the exemplar's is a " + topology_text(a));
+        const auto has_type = [in](const Element& e) { return e.type == in; };
+        if (std::none_of(exemplar.structure.elements.begin(), exemplar.structure.elements.end(), has_type))
+            throw Error(ErrorKind::input, "coarse: type '" + name + "' has no element in the exemplar to copy");
         map.push_back(in);
     }
     return map;

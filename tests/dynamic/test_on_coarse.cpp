@@ -117,6 +117,16 @@ TEST(DynamicOnCoarse, RejectsACoarseMotionTheExemplarCannotDress) {
         EXPECT_NE(std::string(e.what()).find("type 'spaghetti' is not in the exemplar"), std::string::npos);
     }
     EXPECT_THROW(synthesize_on_coarse(exemplar, example("paper_coarse_3d"), options()), Error);
+    // A type the exemplar declares but has no element of: nothing to copy from.
+    Animation bare = exemplar;
+    bare.structure.types.push_back(bare.structure.types[0]);
+    bare.structure.types[0].name = "unused";
+    try {
+        synthesize_on_coarse(bare, example("noodles_coarse_2d"), options());
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("has no element in the exemplar"), std::string::npos) << e.what();
+    }
     DynamicOptions bad = options();
     bad.topology_size = 1;
     EXPECT_THROW(synthesize_on_coarse(exemplar, example("noodles_coarse_2d"), bad), Error);
