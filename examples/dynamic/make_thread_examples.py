@@ -72,14 +72,12 @@ def swinging_fork(count=24, samples=16, spacing=0.24, frames=60, dt=0.1):
             pts = []
             for i in range(samples):
                 # The swing bends the noodle more towards its free end.
-                a = angle * (0.3 + 0.7 * i / (samples - 1))
                 x, y = top
                 for k in range(i):
                     ak = angle * (0.3 + 0.7 * k / (samples - 1))
                     x += spacing * math.sin(ak)
                     y -= spacing * math.cos(ak)
                 pts.append((x + 0.6 * math.sin(2 * math.pi * t / 3.0), y))
-                del a
             track.append(pts)
         elements.append(("noodle", track))
     write("noodles_coarse_2d.json",
