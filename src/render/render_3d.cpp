@@ -1,6 +1,7 @@
-// 3D PNG preview: orthographic view (scene_3d.hpp), elements as shaded spheres
-// drawn with a z-buffer, the domain box as thin grey edges hidden where spheres
-// are in front, supersampled (supersample.hpp); the legend strip below.
+// 3D PNG preview: orthographic view (scene_3d.hpp), elements as shaded spheres and
+// sheets as shaded surfaces (sheet_surface.hpp) drawn with a z-buffer, the domain box as
+// thin grey edges hidden where elements are in front, supersampled (supersample.hpp); the
+// legend strip below.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,26 +9,18 @@
 
 #include "render/class_colors.hpp"
 #include "render/grid.hpp"
+#include "render/hires_buffer.hpp"
 #include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/raster.hpp"
 #include "render/render_internal.hpp"
 #include "render/scene_3d.hpp"
+#include "render/sheet_surface.hpp"
 #include "render/style.hpp"
 #include "render/supersample.hpp"
 
 namespace tessera::render {
 namespace {
-
-struct HiResBuffer {
-    int width = 0, height = 0;
-    std::vector<Rgb> color;
-    std::vector<float> depth;  // larger = nearer; -inf = empty
-
-    HiResBuffer(int w, int h)
-        : width(w), height(h), color(static_cast<size_t>(w) * h, white),
-          depth(static_cast<size_t>(w) * h, -std::numeric_limits<float>::infinity()) {}
-};
 
 void draw_sphere(HiResBuffer& buf, const View3D& view, const Frame3D& frame, double ss, const Sphere& s, Rgb color) {
     const double cx = frame.px(view, s.center) * ss, cy = frame.py(view, s.center) * ss;
@@ -58,7 +51,7 @@ void draw_sphere(HiResBuffer& buf, const View3D& view, const Frame3D& frame, dou
 std::string render_png_3d(const Exemplar& data, const RenderOptions& options) {
     const Style style = make_style(data, options);
     const View3D view = View3D::standard();
-    const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples);
+    const std::vector<Sphere> spheres = collect_spheres(data, style, options.show_samples, true);
     const Frame3D frame = make_frame_3d(data, spheres, view, options);
     const std::vector<Rgb> colors = class_colors(data);
     const Legend legend = make_legend(data, colors, frame.width, options);
@@ -66,6 +59,7 @@ std::string render_png_3d(const Exemplar& data, const RenderOptions& options) {
     const int ss = supersampling(frame.width, frame.height, sizeof(Rgb) + sizeof(float));
     HiResBuffer buf(frame.width * ss, frame.height * ss);
     for (const auto& s : spheres) draw_sphere(buf, view, frame, ss, s, colors[s.type]);
+    draw_sheets(buf, data, view, frame, ss, colors);
     if (options.show_domain)
         for (const auto& [a, b] : box_edges(data.domain.bounds()))
             draw_hidden_edge(buf.color, buf.depth, buf.width, view, frame, ss, a, b);

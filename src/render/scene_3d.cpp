@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "render/palette.hpp"
+#include "render/sheet_surface.hpp"
 #include "tessera/error.hpp"
 
 namespace tessera::render {
@@ -23,26 +24,47 @@ View3D View3D::standard() {
     return v;
 }
 
-std::vector<Sphere> collect_spheres(const Exemplar& data, const Style& style, bool show_samples) {
+namespace {
+
+// A tube from a to b as overlapping spheres half a radius apart: the silhouette ripples by
+// under 4% of the radius, invisible at preview sizes. b's own sphere is the caller's.
+void add_tube(std::vector<Sphere>& spheres, const Vec3& a, const Vec3& b, double tube, int type) {
+    const int steps = std::clamp(static_cast<int>(std::ceil(norm(b - a) / (0.5 * tube))), 1, 10000);
+    for (int i = 0; i < steps; ++i) spheres.push_back({a + (b - a) * (double(i) / steps), tube, type, false});
+}
+
+// The border of a sheet's grid of samples, once round.
+void add_sheet_border(std::vector<Sphere>& spheres, const Exemplar& data, const Element& e, double tube) {
+    const int cols = data.types[e.type].sheet_columns, rows = e.sample_count / cols;
+    const Sample* s = &data.samples[e.first_sample];
+    std::vector<int> ring;
+    for (int c = 0; c < cols; ++c) ring.push_back(c);
+    for (int r = 1; r < rows; ++r) ring.push_back(r * cols + cols - 1);
+    for (int c = cols - 2; c >= 0; --c) ring.push_back((rows - 1) * cols + c);
+    for (int r = rows - 2; r >= 0; --r) ring.push_back(r * cols);
+    for (size_t k = 0; k + 1 < ring.size(); ++k) add_tube(spheres, s[ring[k]].p, s[ring[k + 1]].p, tube, e.type);
+}
+
+}  // namespace
+
+std::vector<Sphere> collect_spheres(const Exemplar& data, const Style& style, bool show_samples, bool sheet_borders) {
     std::vector<Sphere> spheres;
     spheres.reserve(data.elements.size());
-    const double tube = style.line_half_width;
     for (const auto& e : data.elements) {
         if (e.sample_count <= 1) {
             spheres.push_back({e.position, style.radius_of(e), e.type, false});
             continue;
         }
-        // A tube as overlapping spheres half a radius apart: the silhouette
-        // ripples by under 4% of the radius, invisible at preview sizes.
         const Sample* s = &data.samples[e.first_sample];
-        for (int k = 0; k + 1 < e.sample_count; ++k) {
-            const Vec3 a = s[k].p, b = s[k + 1].p;
-            const int steps = std::clamp(static_cast<int>(std::ceil(norm(b - a) / (0.5 * tube))), 1, 10000);
-            for (int i = 0; i < steps; ++i) spheres.push_back({a + (b - a) * (double(i) / steps), tube, e.type, false});
+        if (sheet_borders && is_sheet(data, e)) {
+            add_sheet_border(spheres, data, e, 0.25 * style.line_half_width);
+        } else {
+            for (int k = 0; k + 1 < e.sample_count; ++k)
+                add_tube(spheres, s[k].p, s[k + 1].p, style.line_half_width, e.type);
+            spheres.push_back({s[e.sample_count - 1].p, style.line_half_width, e.type, false});
         }
-        spheres.push_back({s[e.sample_count - 1].p, tube, e.type, false});
         if (show_samples)
-            for (int k = 0; k < e.sample_count; ++k) spheres.push_back({s[k].p, 1.35 * tube, e.type, true});
+            for (int k = 0; k < e.sample_count; ++k) spheres.push_back({s[k].p, 1.35 * style.line_half_width, e.type, true});
     }
     return spheres;
 }

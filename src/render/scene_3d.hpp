@@ -31,8 +31,11 @@ struct Sphere {
     bool marker = false;  // a sample bead of a multi-sample element (drawn darker)
 };
 
-// Spheres for every element, in element order.
-std::vector<Sphere> collect_spheres(const Exemplar& data, const Style& style, bool show_samples);
+// Spheres for every element, in element order. With `sheet_borders`, a sheet (a grid of
+// samples) gets its border only, as a tube (the caller draws its surface: sheet_surface.hpp);
+// otherwise each of its rows is a tube.
+std::vector<Sphere> collect_spheres(const Exemplar& data, const Style& style, bool show_samples,
+                                    bool sheet_borders = false);
 
 // The 12 edges of a box.
 std::array<std::pair<Vec3, Vec3>, 12> box_edges(const Box& box);
