@@ -47,4 +47,23 @@ inline Animation drifting_lattice(int nx, int ny, int frames, Vec3 velocity, dou
     return a;
 }
 
+// A jittered cubic lattice of n^3 balls (spacing 1, each coordinate jittered uniformly by
+// +-jitter/2) in the box [-0.5, n - 0.5]^3, element ids 0..n^3-1: a still 3D exemplar.
+inline tessera::Exemplar jittered_cubic_lattice(int n, double jitter, std::uint64_t seed = 5) {
+    tessera::Exemplar ex;
+    ex.dimension = 3;
+    const int type = ex.type_index("ball");
+    const tessera::core::KeyedRng rng(seed, tessera::core::Purpose::test);
+    std::uint64_t c = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                const double jx = rng.uniform(c++), jy = rng.uniform(c++), jz = rng.uniform(c++);
+                ex.add_element(type, {{i + jitter * (jx - 0.5), j + jitter * (jy - 0.5), k + jitter * (jz - 0.5)}});
+            }
+    for (size_t e = 0; e < ex.elements.size(); ++e) ex.elements[e].id = e;
+    ex.domain = tessera::Domain::box({-0.5, -0.5, -0.5}, {n - 0.5, n - 0.5, n - 0.5}, 3);
+    return ex;
+}
+
 }  // namespace dynamic_test

@@ -74,19 +74,7 @@ TEST(Dynamic, SteadyMotionKeepsVelocityAndArrangementFrameByFrame) {
 
 TEST(Dynamic, ThreeDimensionalParticlesKeepTheirMotionAndSpacing) {
     // A jittered cubic lattice (spacing 1) drifting at (0.05, 0, 0.02) per frame.
-    Exemplar ex;
-    ex.dimension = 3;
-    const int type = ex.type_index("ball");
-    const core::KeyedRng rng(5, core::Purpose::test);
-    std::uint64_t c = 0;
-    for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 5; ++j)
-            for (int k = 0; k < 5; ++k) {
-                const double jx = rng.uniform(c++), jy = rng.uniform(c++), jz = rng.uniform(c++);
-                ex.add_element(type, {{i + 0.1 * (jx - 0.5), j + 0.1 * (jy - 0.5), k + 0.1 * (jz - 0.5)}});
-            }
-    for (size_t e = 0; e < ex.elements.size(); ++e) ex.elements[e].id = e;
-    ex.domain = Domain::box({-0.5, -0.5, -0.5}, {4.5, 4.5, 4.5}, 3);
+    const Exemplar ex = dynamic_test::jittered_cubic_lattice(5, 0.1);
     Animation a = animation_from_exemplar(ex);
     a.times = {};
     a.positions = {};

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "core/rng.hpp"
+#include "dynamic/dynamic_fixtures.hpp"
 #include "dynamic/graph_nodes.hpp"
 #include "dynamic/graph_path.hpp"
 #include "dynamic/path_blend.hpp"
@@ -331,17 +332,7 @@ TEST(GraphMotion, BadOptionsAreRefusedByName) {
 }
 
 TEST(GraphMotion, ThreeDimensionalStillMovesWithoutCollapse) {
-    Exemplar ex;
-    ex.dimension = 3;
-    const int type = ex.type_index("ball");
-    const core::KeyedRng rng(5, core::Purpose::test);
-    std::uint64_t c = 0;
-    for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 5; ++j)
-            for (int k = 0; k < 5; ++k)
-                ex.add_element(type, {{i + 0.3 * (rng.uniform(c++) - 0.5), j + 0.3 * (rng.uniform(c++) - 0.5),
-                                       k + 0.3 * (rng.uniform(c++) - 0.5)}});
-    ex.domain = Domain::box({-0.5, -0.5, -0.5}, {4.5, 4.5, 4.5}, 3);
+    const Exemplar ex = dynamic_test::jittered_cubic_lattice(5, 0.3);
     GraphMotionOptions o;
     o.frames = 12;
     const Animation a = enrich_by_graph(ex, o);
