@@ -28,6 +28,11 @@ namespace tessera {
 // frame of the temporal window (full).
 enum class NeighbourhoodShape { compact, full };
 
+// Sequencing (section 4.1): frame by frame (temporal-causal neighbourhoods, each frame
+// advected from the last) or all frames together (spatio-temporal patch copy, then search
+// and assignment over every frame at once with temporal-non-causal neighbourhoods).
+enum class Sequencing { frame, all };
+
 struct DynamicOptions {
     // Output frames; 0 = as many as the exemplar has (at least 2).
     int frames = 0;
@@ -45,8 +50,9 @@ struct DynamicOptions {
     double sigma_t = 0.0;
     // N best input matches blended by Eq. 11-12; 1 = the basic algorithm (section 4.1).
     int matches = 2;
-    // Search + assignment rounds per frame.
+    // Search + assignment rounds per frame (sequencing all: rounds over all frames).
     int iterations = 2;
+    Sequencing sequencing = Sequencing::frame;
     // Search: k-coherence (the matches' own continuations, their neighbours' shifted
     // matches and random input samples) or an exhaustive scan of every input sample.
     SearchMode search = SearchMode::kcoherence;
@@ -65,6 +71,12 @@ struct DynamicOptions {
     // domain's bounding box (periodic: a steady flow keeps the domain filled); off = it is put
     // back at the nearest point inside.
     bool wrap = false;
+    // Physics sub-step (section 4.4, Figure 5; frame by frame only): after each frame's
+    // advection, and again after its last assignment, the particles go through a Bullet
+    // step, as spheres of half the exemplar's closest-pair distance without gravity, which
+    // pushes apart the ones that collided and out of the domain's obstacles the ones that
+    // went into them.
+    bool physics = false;
     // Graph synthesis (section 4.3, tessera/graph_motion.hpp): motion for a still. -1 =
     // automatic (a one-frame exemplar is enriched to 24 frames), 0 = off, N >= 2 = the
     // exemplar's frame 0 is enriched to N frames (its own motion, if any, is set aside).
@@ -86,7 +98,8 @@ struct AnimatedArrangement : Animation {
     RunStats stats;
 };
 
-// Synthesizes an animation of `exemplar` over `domain` frame by frame. Throws Error(input)
+// Synthesizes an animation of `exemplar` over `domain` frame by frame (or, with sequencing
+// all, every frame together: particles and agents only, the compact shape). Throws Error(input)
 // for an invalid exemplar (Animation::validate) or one with multi-sample elements (threads
 // and sheets follow a coarse motion: synthesize_on_coarse), Error(option) for a bad option (checked against
 // dynamic_option_table), Error(domain) for a domain of another dimension, Cancelled when

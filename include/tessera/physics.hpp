@@ -22,6 +22,10 @@ struct PhysicsOptions {
     int substeps = 5;                // fixed simulation steps per call (the paper runs 5 per iteration); 0..10000
     double time_step = 1.0 / 60.0;   // seconds per step; > 0
     Vec3 gravity{};                  // data units / s^2; zero = 9.81 m/s^2 along -y (2D) or -z (3D)
+    bool no_gravity = false;         // true = no gravity at all: bodies at rest only push apart
+                                     // where they overlap (the dynamic method's collision sub-step)
+    bool periodic = false;           // the domain's bounding box wraps round: no walls on it nor on
+                                     // a polygon's outer ring (holes and meshes stay walls)
     double units_per_metre = 1.0;    // data units in one metre: scales the default gravity; > 0
     double friction = 0.6;           // Coulomb friction of bodies and domain walls, >= 0
     double restitution = 0.0;        // bounciness, in [0, 1]
@@ -40,8 +44,8 @@ struct PhysicsReport {
     int elements = 0;                // elements measured
 };
 
-// The gravity a run uses: options.gravity, or 9.81 * units_per_metre along -y (2D) or
-// -z (3D) when it is zero. Throws Error(option) for a non-finite gravity or
+// The gravity a run uses: zero with no_gravity, else options.gravity, or 9.81 *
+// units_per_metre along -y (2D) or -z (3D) when it is zero. Throws Error(option) for a non-finite gravity or
 // units_per_metre <= 0.
 Vec3 physics_gravity(const PhysicsOptions& options, int dimension);
 

@@ -54,6 +54,12 @@ void add_solver_rows(OptionTable<O>& t) {
                                [](auto& o) -> auto& { return o.matches; }, between(1, 8)));
     t.push_back(integer_row<O>("iterations", "Search + assignment rounds per frame after the advection.",
                                [](auto& o) -> auto& { return o.iterations; }, between(0, 100)));
+    t.push_back(choice_row<O>(
+        "sequencing",
+        "frame (each frame advected from the last, temporal-causal neighbourhoods) or all (spatio-temporal "
+        "patches copied into every frame, then optimised together with temporal-non-causal neighbourhoods).",
+        [](auto& o) -> auto& { return o.sequencing; },
+        std::vector<std::pair<std::string, Sequencing>>{{"frame", Sequencing::frame}, {"all", Sequencing::all}}));
     t.push_back(choice_row<O>("search",
                               "Candidate search: kcoherence (matches' continuations, shifted neighbour matches, "
                               "similarity sets) or exhaustive (every exemplar sample-frame).",
@@ -76,6 +82,10 @@ void add_solver_rows(OptionTable<O>& t) {
                             "An element carried out of the domain re-enters on the opposite side of its bounding "
                             "box (periodic); off = it is put back at the nearest point inside.",
                             [](auto& o) -> auto& { return o.wrap; }));
+    t.push_back(flag_row<O>("physics",
+                            "Frame by frame: a physics sub-step after each advection and each frame's assignment "
+                            "(Bullet, no gravity) pushes apart particles closer than the exemplar's closest pair.",
+                            [](auto& o) -> auto& { return o.physics; }));
 }
 
 // All-frame synthesis on a coarse motion (synthesize_on_coarse).

@@ -7,23 +7,13 @@
 
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
+#include "dynamic/search_common.hpp"
 
 namespace tessera::dynamic {
 
 namespace {
 
 constexpr int coherent_neighbours = 8;  // nearest neighbours whose matches propose shifted candidates
-
-// A key of the world cell holding p (cells one spacing wide, anchored at the origin), so
-// that random draws depend on where a sample is, not on its index in this run.
-std::uint64_t world_cell_key(const Vec3& p, double spacing) {
-    std::uint64_t key = 0;
-    for (int k = 0; k < 3; ++k) {
-        const auto c = static_cast<std::int64_t>(std::floor(p[k] / spacing));
-        key = core::mix64(key ^ static_cast<std::uint64_t>(c));
-    }
-    return key;
-}
 
 void coherent_candidates(const InputFrames& input, const OutputFrames& output, int s, const StParams& params,
                          const SearchScratch& scratch, std::vector<int>& out) {
@@ -79,8 +69,15 @@ void gather_candidates(const InputFrames& input, const OutputFrames& output, int
     out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
-// Keeps the N best (distance, id) pairs in ascending order; equal distances keep the lower id
-// (candidates arrive in id order and only a strictly better one displaces).
+double search_sample(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
+                     const SearchSettings& settings, SearchScratch& scratch) {
+    output.gather(s, scratch.neighbourhood);
+    gather_candidates(input, output, s, params, settings, scratch);
+    return match_and_predict(input, output, s, params, scratch);
+}
+
+}  // namespace
+
 void keep_best(int id, double d, int n, int* best, double* dist, int& count) {
     int at = count < n ? count : n;
     while (at > 0 && d < dist[at - 1]) --at;
@@ -89,52 +86,6 @@ void keep_best(int id, double d, int n, int* best, double* dist, int& count) {
     best[at] = id, dist[at] = d;
     count = std::min(count + 1, n);
 }
-
-void write_predictions(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
-                       SearchScratch& scratch) {
-    const StNeighbourhood& nb = scratch.neighbourhood;
-    int& count = output.prediction_count(s);
-    count = 0;
-    Prediction* out = output.predictions(s);
-    for (int j = 0; j < output.matches(); ++j) {
-        const int m = output.match(s)[j];
-        if (m < 0 || output.omega(s)[j] <= 0.0) continue;
-        scratch.partner.assign(nb.entries.size(), -1);
-        st_distance(nb, input.entries(m), input.group_start(m), params, scratch.metric, scratch.partner.data(),
-                    std::numeric_limits<double>::infinity());
-        const StEntry* in = input.entries(m);
-        for (int k = 0; k < nb.groups; ++k)
-            for (int e = nb.start[k]; e < nb.start[k + 1]; ++e) {
-                const int p = scratch.partner[e];
-                if (p < 0 || count >= output.prediction_stride()) continue;
-                const double w = output.omega(s)[j] * 0.5 * (nb.entries[e].kappa + in[p].kappa);
-                out[count++] = Prediction{nb.entries[e].sample, k, nb.entries[e].offset - in[p].offset, w};
-            }
-    }
-}
-
-double search_sample(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
-                     const SearchSettings& settings, SearchScratch& scratch) {
-    output.gather(s, scratch.neighbourhood);
-    gather_candidates(input, output, s, params, settings, scratch);
-    const int n = output.matches();
-    int* best = output.match(s);
-    double* dist = output.distance(s);
-    int count = 0;
-    for (int id : scratch.candidates) {
-        const double bound = count < n ? std::numeric_limits<double>::infinity() : dist[n - 1];
-        const double d = st_distance(scratch.neighbourhood, input.entries(id), input.group_start(id), params,
-                                     scratch.metric, nullptr, bound);
-        if (d < bound) keep_best(id, d, n, best, dist, count);
-    }
-    for (int j = count; j < n; ++j) best[j] = -1, dist[j] = 0.0;
-    blend_weights(dist, count, output.omega(s));
-    for (int j = count; j < n; ++j) output.omega(s)[j] = 0.0;
-    write_predictions(input, output, s, params, scratch);
-    return count > 0 ? dist[0] : 0.0;
-}
-
-}  // namespace
 
 // Eq. 12: omega_j = 1 - d_j / sum_k d_k (Eq. 11 normalises by their sum); equal weights when
 // every distance is zero, and 1 for a single match.

@@ -38,6 +38,10 @@ double search_frame(const InputFrames& input, OutputFrames& output, const StPara
 // `radius`: the output neighbourhood radius (whose neighbours' pairs may hold the sample).
 void assign_frame(OutputFrames& output, double radius, int threads);
 
+// Keeps the N best (distance, id) pairs in ascending order; equal distances keep the lower id
+// (candidates arrive in id order and only a strictly better one displaces).
+void keep_best(int id, double d, int n, int* best, double* dist, int& count);
+
 // Eq. 12: the blending weights of `count` matches at distances `dist` (1 for a single match).
 void blend_weights(const double* dist, int count, double* omega);
 

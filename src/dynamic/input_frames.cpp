@@ -20,7 +20,8 @@ void finish_group(std::vector<StEntry>& entries, int begin) {
 InputFrames::InputFrames(const Animation& exemplar, const StParams& params, int threads)
     : params_(params),
       samples_(exemplar.sample_count()),
-      first_frame_(params.temporal - 1),
+      first_frame_(params.temporal - 1 - params.ahead),
+      last_frame_(exemplar.frame_count() - 1 - params.ahead),
       frame_count_(exemplar.frame_count()) {
     const Exemplar& ex = exemplar.structure;
     sample_type_.resize(samples_);
@@ -32,7 +33,7 @@ InputFrames::InputFrames(const Animation& exemplar, const StParams& params, int 
                                 exemplar.positions.begin() + static_cast<long>(g + 1) * samples_);
         grids_[g].build(frame_points_[g], params.input_radius, params.dimension);
     }
-    const int usable = std::max(0, frame_count_ - first_frame_) * samples_;
+    const int usable = std::max(0, last_frame_ + 1 - first_frame_) * samples_;
     sample_.resize(usable), frame_.resize(usable), type_.resize(usable);
     motion_.resize(usable), position_.resize(usable);
     of_type_.assign(ex.types.size(), {});
@@ -62,23 +63,23 @@ InputFrames::InputFrames(const Animation& exemplar, const StParams& params, int 
     for (auto& g : gathered) entries_.insert(entries_.end(), g.begin(), g.end());
 }
 
-// Group k: the samples within input_radius of the centre at frame g - k (full shape), or
-// group 0 so and the centre's own past sample for k >= 1 (compact shape).
+// Group k: the samples within input_radius of the centre at frame g + time_offset(k) (full
+// shape), or group 0 so and the centre's own sample at that frame for k >= 1 (compact shape).
 void InputFrames::gather(const Animation& exemplar, int id, std::vector<StEntry>& out, int* start) const {
     const int s = sample_[id], g = frame_[id];
     const Vec3 centre = exemplar.at(g, s);
     for (int k = 0; k < params_.temporal; ++k) {
         start[k] = static_cast<int>(out.size());
-        const int frame = g - k;
+        const int dt = time_offset(k, params_), frame = g + dt;
         if (k > 0 && params_.shape == NeighbourhoodShape::compact) {
             const Vec3 d = exemplar.at(frame, s) - centre;
-            out.push_back({d, falloff(d, k, params_), sample_type_[s], s});
+            out.push_back({d, falloff(d, dt, params_), sample_type_[s], s});
             continue;
         }
         grids_[frame].for_each_within(centre, params_.input_radius, [&](int other, double) {
             if (k == 0 && other == s) return;
             const Vec3 d = exemplar.at(frame, other) - centre;
-            out.push_back({d, falloff(d, k, params_), sample_type_[other], other});
+            out.push_back({d, falloff(d, dt, params_), sample_type_[other], other});
         });
         finish_group(out, start[k]);
     }
@@ -86,7 +87,7 @@ void InputFrames::gather(const Animation& exemplar, int id, std::vector<StEntry>
 }
 
 int InputFrames::nearest(int frame, const Vec3& p, int type, double max_distance) const {
-    if (frame < first_frame_ || frame >= frame_count_) return -1;
+    if (frame < first_frame_ || frame > last_frame_) return -1;
     const int s = grids_[frame].nearest(p, max_distance, [&](int i) { return sample_type_[i] == type; });
     return s < 0 ? -1 : id(s, frame);
 }

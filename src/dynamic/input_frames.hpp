@@ -1,5 +1,5 @@
 // The exemplar animation indexed for search: every input sample-frame (s, g) whose causal
-// window g - T + 1 .. g lies in the exemplar gets its neighbourhood (st_neighbourhood.hpp),
+// window g - T + 1 .. g (non-causal: g - h .. g + h) lies in the exemplar gets its neighbourhood (st_neighbourhood.hpp),
 // its continuation (s, g + 1), its motion to the next frame, and a k-coherence set; a grid
 // per input frame answers "which input sample is nearest this point at frame g".
 #pragma once
@@ -19,18 +19,20 @@ public:
     InputFrames(const Animation& exemplar, const StParams& params, int threads);
 
     int size() const { return static_cast<int>(sample_.size()); }
-    int first_frame() const { return first_frame_; }   // T - 1
+    int first_frame() const { return first_frame_; }   // T - 1 (non-causal: h)
+    int last_frame() const { return last_frame_; }     // the last frame with a whole window
     int frame_count() const { return frame_count_; }
     // The id of (sample, frame), or -1 when the frame's window is not in the exemplar.
     int id(int sample, int frame) const {
-        if (frame < first_frame_ || frame >= frame_count_) return -1;
+        if (frame < first_frame_ || frame > last_frame_) return -1;
         return (frame - first_frame_) * samples_ + sample;
     }
     int sample(int id) const { return sample_[id]; }
     int frame(int id) const { return frame_[id]; }
     int type(int id) const { return type_[id]; }
-    // (s, g + 1), or -1 at the exemplar's last frame.
-    int next(int id) const { return frame_[id] + 1 < frame_count_ ? id + samples_ : -1; }
+    // (s, g + 1), or -1 at the last usable frame; (s, g - 1), or -1 at the first.
+    int next(int id) const { return frame_[id] < last_frame_ ? id + samples_ : -1; }
+    int previous(int id) const { return frame_[id] > first_frame_ ? id - samples_ : -1; }
     // p(s, g + 1) - p(s, g), per frame; at the last frame the motion into it.
     const Vec3& motion(int id) const { return motion_[id]; }
     const Vec3& position(int id) const { return position_[id]; }
@@ -51,7 +53,7 @@ private:
     void gather(const Animation& exemplar, int id, std::vector<StEntry>& out, int* start) const;
 
     StParams params_;
-    int samples_ = 0, first_frame_ = 0, frame_count_ = 0;
+    int samples_ = 0, first_frame_ = 0, last_frame_ = 0, frame_count_ = 0;
     std::vector<int> sample_, frame_, type_, begin_, starts_;
     std::vector<Vec3> motion_, position_;
     std::vector<StEntry> entries_;

@@ -25,35 +25,34 @@ OutputFrames::OutputFrames(int dimension, std::vector<int> sample_types, int mat
     prediction_count_.assign(n, 0);
 }
 
-// The positions and, with wrap, their copies shifted by one period along each axis (and
-// each pair of axes, for the corners) wherever a copy falls within a radius of the box.
-void OutputFrames::build_images(int k, const std::vector<Vec3>& positions) {
-    Images& im = images_[k];
-    im.points = positions;
-    im.sample.resize(positions.size());
-    for (size_t s = 0; s < positions.size(); ++s) im.sample[s] = static_cast<int>(s);
-    if (periodic_.on) {
-        const int dims = params_.dimension;
-        const double r = params_.radius;
-        for (size_t s = 0; s < positions.size(); ++s) {
-            // Per axis: -1, 0 or +1 periods, the shift that brings the point near the far face.
-            int near[3] = {0, 0, 0};
-            for (int a = 0; a < dims; ++a) {
-                const double x = positions[s][a] - periodic_.lo[a];
-                if (x < r) near[a] = 1;
-                else if (x > periodic_.extent[a] - r) near[a] = -1;
-            }
-            for (int mask = 1; mask < (1 << dims); ++mask) {
-                Vec3 shift;
-                bool valid = true;
-                for (int a = 0; a < dims && valid; ++a)
-                    if (mask & (1 << a)) valid = near[a] != 0, shift[a] = near[a] * periodic_.extent[a];
-                if (!valid) continue;
-                im.points.push_back(positions[s] + shift);
-                im.sample.push_back(static_cast<int>(s));
-            }
+void PeriodicImages::build(const Vec3* positions, int n, const Periodic& periodic, double radius, int dimension) {
+    points.assign(positions, positions + n);
+    sample.resize(n);
+    for (int s = 0; s < n; ++s) sample[s] = s;
+    if (!periodic.on) return;
+    for (int s = 0; s < n; ++s) {
+        // Per axis: -1, 0 or +1 periods, the shift that brings the point near the far face.
+        int near[3] = {0, 0, 0};
+        for (int a = 0; a < dimension; ++a) {
+            const double x = positions[s][a] - periodic.lo[a];
+            if (x < radius) near[a] = 1;
+            else if (x > periodic.extent[a] - radius) near[a] = -1;
+        }
+        for (int mask = 1; mask < (1 << dimension); ++mask) {
+            Vec3 shift;
+            bool valid = true;
+            for (int a = 0; a < dimension && valid; ++a)
+                if (mask & (1 << a)) valid = near[a] != 0, shift[a] = near[a] * periodic.extent[a];
+            if (!valid) continue;
+            points.push_back(positions[s] + shift);
+            sample.push_back(s);
         }
     }
+}
+
+void OutputFrames::build_images(int k, const std::vector<Vec3>& positions) {
+    PeriodicImages& im = images_[k];
+    im.build(positions.data(), static_cast<int>(positions.size()), periodic_, params_.radius, params_.dimension);
     grids_[k].build(im.points, params_.radius, params_.dimension);
 }
 
@@ -79,7 +78,7 @@ void OutputFrames::gather(int s, StNeighbourhood& out) const {
             out.entries.push_back({d, falloff(d, k, params_), type_[s], s});
             continue;
         }
-        const Images& im = images_[k];
+        const PeriodicImages& im = images_[k];
         grids_[k].for_each_within(centre, params_.radius, [&](int i, double) {
             const int o = im.sample[i];
             if (k == 0 && o == s) return;

@@ -30,6 +30,15 @@ struct Periodic {
     Vec3 lo, extent;
 };
 
+// The points a frame's grid holds: the samples' positions, then with wrap their copies
+// shifted by one period along each axis (and each pair of axes, for the corners) wherever a
+// copy falls within `radius` of the box; sample[i] = the sample point i stands for.
+struct PeriodicImages {
+    std::vector<Vec3> points;
+    std::vector<int> sample;
+    void build(const Vec3* positions, int n, const Periodic& periodic, double radius, int dimension);
+};
+
 class OutputFrames {
 public:
     OutputFrames(int dimension, std::vector<int> sample_types, int matches, const StParams& params,
@@ -94,14 +103,10 @@ private:
     std::vector<int> type_;
     std::vector<Vec3> current_, current_shift_, past_, past_shift_;
     // Per group k: the points its grid holds (the samples' positions, advanced past ones for
-    // k >= 1, then with wrap their images within a radius beyond each face) and their samples.
-    struct Images {
-        std::vector<Vec3> points;
-        std::vector<int> sample;
-    };
+    // k >= 1, with their periodic images) and their samples.
     void build_images(int k, const std::vector<Vec3>& positions);
     Periodic periodic_;
-    std::vector<Images> images_;
+    std::vector<PeriodicImages> images_;
     std::vector<core::SpatialGrid> grids_;      // per k, over images_[k].points
     std::vector<int> match_, prior_match_;
     std::vector<double> distance_, omega_;

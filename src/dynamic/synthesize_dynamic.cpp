@@ -12,10 +12,13 @@
 
 #include "core/parallel.hpp"
 #include "core/progress_span.hpp"
-#include "dynamic/frame_search.hpp"
 #include "dynamic/graph_exemplar.hpp"
 #include "dynamic/input_frames.hpp"
+#include "dynamic/collision_step.hpp"
+#include "dynamic/frame_search.hpp"
+#include "dynamic/obstacle_flow.hpp"
 #include "dynamic/output_frames.hpp"
+#include "dynamic/synthesize_all_frames.hpp"
 #include "tessera/det.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -109,7 +112,8 @@ void keep_inside(Vec3& p, Vec3& shift, const Domain& domain, bool wrap) {
 
 // Advection (section 4.1, "Initialization"): every sample follows the blended motion of its
 // matches (Eq. 11) and the flow; its matches move on to their next input frame.
-void advect(const InputFrames& input, OutputFrames& out, const Vec3& flow_step, const Domain& domain, bool wrap) {
+void advect(const InputFrames& input, OutputFrames& out, const ObstacleFlow& flow, const Vec3& flow_step,
+            const Domain& domain, bool wrap) {
     const int frame = out.frame();
     for (int s = 0; s < out.size(); ++s) {
         Vec3 motion;
@@ -122,8 +126,10 @@ void advect(const InputFrames& input, OutputFrames& out, const Vec3& flow_step, 
             if (input.next(m) >= 0) out.match(s)[j] = input.next(m);
         }
         if (weight > 0.0) motion = motion / weight;
-        Vec3 p = out.past(frame - 1, s) + motion + flow_step;
-        Vec3 shift = out.past_shift(frame - 1, s) + flow_step;
+        // The flow where the sample is: the far flow, bent round the domain's obstacles.
+        const Vec3 carried = flow.displacement(out.past(frame - 1, s), flow_step);
+        Vec3 p = out.past(frame - 1, s) + motion + carried;
+        Vec3 shift = out.past_shift(frame - 1, s) + carried;
         keep_inside(p, shift, domain, wrap);
         out.current()[s] = p;
         out.current_shift()[s] = shift;
@@ -141,6 +147,8 @@ public:
           input_(exemplar, params, options.threads),
           out_(params.dimension, sample_types(first, exemplar.structure), options.matches, params,
                periodic_of(domain, options)),
+          flow_(domain, options.threads, squared_norm(options.flow) > 0.0),
+          collisions_(exemplar, domain, options.wrap),
           scratch_(core::resolve_threads(options.threads)),
           settings_{options.search, options.random_candidates, options.seed, 0, true} {
         if (options.search == SearchMode::kcoherence)
@@ -148,9 +156,10 @@ public:
         for (size_t s = 0; s < first.samples.size(); ++s) out_.current()[s] = first.samples[s].p;
     }
 
-    // Frame 0, the static method's arrangement as it is: matched to the exemplar's first full
-    // window (only its spatial group), not moved. Returns the energy of the match.
+    // Frame 0, the static method's arrangement as it is (with physics, its collisions
+    // resolved): matched to the exemplar's first full window (only its spatial group). Returns the energy of the match.
     double first_frame() {
+        if (options_.physics) resolve_collisions();  // settled before it is shown, not at frame 1
         out_.index();
         const double energy = search_frame(input_, out_, params_, settings_, scratch_, options_.threads);
         settings_.first_frame_only = false;
@@ -160,7 +169,8 @@ public:
     // The next frame: advection, then the rounds of search and assignment. Returns the last
     // search's energy.
     double next_frame(const Vec3& flow_step) {
-        advect(input_, out_, flow_step, domain_, options_.wrap);
+        advect(input_, out_, flow_, flow_step, domain_, options_.wrap);
+        if (options_.physics) resolve_collisions();
         double energy = 0.0;
         for (int round = 0; round < options_.iterations; ++round) {
             settings_.round = round;
@@ -170,6 +180,7 @@ public:
             for (int s = 0; s < out_.size(); ++s)
                 keep_inside(out_.current()[s], out_.current_shift()[s], domain_, options_.wrap);
         }
+        if (options_.physics && options_.iterations > 0) resolve_collisions();
         return energy;
     }
 
@@ -178,6 +189,14 @@ public:
     void commit() { out_.commit(); }
 
 private:
+    // The physics sub-step (Figure 5): what it moves is detail motion, so the samples'
+    // flow shifts stay; a sample pushed across the wrap seam re-enters as advection's do.
+    void resolve_collisions() {
+        collisions_.apply(out_.current());
+        for (int s = 0; s < out_.size(); ++s)
+            keep_inside(out_.current()[s], out_.current_shift()[s], domain_, options_.wrap);
+    }
+
     static Periodic periodic_of(const Domain& domain, const DynamicOptions& options) {
         if (!options.wrap) return {};
         return {true, domain.bounds().lo, domain.bounds().size()};
@@ -188,6 +207,8 @@ private:
     StParams params_;
     InputFrames input_;
     OutputFrames out_;
+    ObstacleFlow flow_;
+    CollisionStep collisions_;
     std::vector<SearchScratch> scratch_;
     SearchSettings settings_;
 };
@@ -211,6 +232,8 @@ double frame_interval(const Animation& exemplar) {
 
 AnimatedArrangement synthesize_dynamic(const Animation& given, const Domain& domain, const DynamicOptions& options,
                                        const Progress& progress) {
+    // All frames together (section 4.1, all-frame sequencing): synthesize_all_frames.cpp.
+    if (options.sequencing == Sequencing::all) return dynamic::synthesize_all_frames(given, domain, options, progress);
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     // A still gets its motion from graph synthesis first (section 4.3, graph_exemplar.cpp).

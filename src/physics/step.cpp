@@ -149,7 +149,8 @@ btCollisionShape* make_hull(World& w, const std::vector<Vec3>& points, const Ele
 
 // Polygon domains (2D): every edge of the outer ring and of the holes as a wall, two
 // triangles spanning the plane's thickness, so elements come to rest against the
-// polygon, not its bounding box, and cannot fall into a hole.
+// polygon, not its bounding box, and cannot fall into a hole. A periodic domain has no
+// outer ring: only its holes are walls.
 bool add_polygon_walls(World& w, const Domain& domain, const Frame& f, const PhysicsOptions& o) {
     if (domain.kind() != Domain::Kind::polygon) return false;
     const DomainSource src = domain.source();
@@ -167,7 +168,7 @@ bool add_polygon_walls(World& w, const Domain& domain, const Frame& f, const Phy
             tm->addTriangle(point(a, -reach), point(b, reach), point(a, reach));
         }
     };
-    ring(src.outer);
+    if (!o.periodic) ring(src.outer);
     for (const auto& h : src.holes) ring(h);
     if (tm->getNumTriangles() == 0) return false;
     btCollisionShape* shape = w.keep(new btBvhTriangleMeshShape(tm.get(), true));
@@ -286,6 +287,7 @@ Vec3 physics_gravity(const PhysicsOptions& options, int dimension) {
     if (!is_finite(options.gravity)) throw Error(ErrorKind::option, "physics: gravity must be finite");
     if (!(options.units_per_metre > 0) || !std::isfinite(options.units_per_metre))
         throw Error(ErrorKind::option, "physics: units_per_metre must be > 0");
+    if (options.no_gravity) return {};
     Vec3 g = options.gravity;
     if (dimension == 2) g.z = 0;
     if (squared_norm(g) > 0) return g;
@@ -317,7 +319,7 @@ PhysicsReport step_physics(Arrangement& data, const Domain& domain, const Physic
         solver.m_splitImpulse = 1;  // push overlaps apart without adding velocity
         solver.m_splitImpulsePenetrationThreshold = btScalar(-0.02);
         solver.m_erp2 = btScalar(options.overlap_correction);
-        add_box_walls(w, domain.bounds(), data.dimension, f, options);
+        if (!options.periodic) add_box_walls(w, domain.bounds(), data.dimension, f, options);
         add_mesh_wall(w, domain, f, options);
         add_polygon_walls(w, domain, f, options);
         add_bodies(w, data, shapes, f, options);
