@@ -23,12 +23,12 @@ import random
 
 
 def write(path, description, dimension, box, types, tracks, dt):
-    """tracks: per element (type, [position per frame])."""
+    """types: names, or type objects; tracks: per element (type name, [position per frame])."""
     frames = len(tracks[0][1])
     lines = ['{"format": "tessera", "version": 1, "dimension": %d,' % dimension,
              ' "description": %s,' % json.dumps(description),
              ' "domain": {"type": "box", "min": %s, "max": %s},' % (json.dumps(box[0]), json.dumps(box[1])),
-             ' "types": %s,' % json.dumps([{"name": t} for t in types]),
+             ' "types": %s,' % json.dumps([t if isinstance(t, dict) else {"name": t} for t in types]),
              ' "elements": [']
     lines.append(",\n".join('  {"id": %d, "type": "%s"}' % (i, t) for i, (t, _) in enumerate(tracks)) + "],")
     lines.append(' "frames": [')
@@ -107,7 +107,7 @@ def fish_school(seed=9, size=10.0, frames=32):
           "A loose school of fish (Poisson disk, exclusion 0.9) at rest on average: each darts along x "
           "(amplitude 0.10-0.18, period 12 frames) and weaves across (0.08, period 6), in loose step with its "
           "neighbours; examples/dynamic/make_examples.py",
-          2, ([-0.2, -0.2], [size + 0.2, size + 0.2]), ["fish"], tracks, 1 / 12)
+          2, ([-0.2, -0.2], [size + 0.2, size + 0.2]), [{"name": "fish", "glyph": "fish"}], tracks, 1 / 12)
 
 
 if __name__ == "__main__":

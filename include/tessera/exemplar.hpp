@@ -29,6 +29,10 @@ struct Sample {
     double time = 0.0;    // time stamp; 0 for static data (space-time synthesis later)
 };
 
+// How a single-sample element is drawn in 2D pictures (render.hpp): a disk, or a fish
+// heading along the element's x axis (in an animation, along its motion).
+enum class ElementGlyph { disk, fish };
+
 // How the samples of an element hang together in space-time synthesis (animation.hpp):
 // automatic = none for single-sample elements and thread for multi-sample ones.
 enum class ElementTopology { automatic, none, thread, sheet };
@@ -58,6 +62,8 @@ struct ElementType {
     // of columns of its sample grid (sample id = row x columns + column).
     ElementTopology topology = ElementTopology::automatic;
     int sheet_columns = 0;
+    // 2D pictures of single-sample elements: disk (the default) or fish.
+    ElementGlyph glyph = ElementGlyph::disk;
 };
 
 struct Element {

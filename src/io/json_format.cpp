@@ -287,7 +287,7 @@ private:
             if (!t.is_object()) fail(where, "must be an object, got " + t.dump());
             check_keys(t,
                        {"name", "rigid", "floor", "mesh", "color", "reference", "depends_on", "weights", "graph",
-                        "topology", "columns"},
+                        "topology", "columns", "glyph"},
                        where);
             ElementType type;
             type.name = string(require(t, "name", where), member(where, "name"));
@@ -316,6 +316,7 @@ private:
             if (t.contains("graph")) type.graph = graph(t["graph"], member(where, "graph"));
             if (t.contains("topology")) type.topology = topology(t["topology"], member(where, "topology"));
             if (t.contains("columns")) type.sheet_columns = columns(t["columns"], member(where, "columns"));
+            if (t.contains("glyph")) type.glyph = glyph(t["glyph"], member(where, "glyph"));
             ex.types.push_back(std::move(type));
         }
         // Names may refer to types listed later, so they are checked once all are read.
@@ -328,6 +329,14 @@ private:
                          "type '" + ex.types[i].name + "' depends on unknown type '" + name + "'");
             }
         }
+    }
+
+    // How the type's single-sample elements are drawn in 2D pictures.
+    ElementGlyph glyph(const Json& value, const std::string& where) const {
+        const std::string name = string(value, where);
+        if (name == "disk") return ElementGlyph::disk;
+        if (name == "fish") return ElementGlyph::fish;
+        fail(where, "unknown glyph '" + name + "' (known: disk, fish)");
     }
 
     // How the type's samples hang together in space-time synthesis (animation.hpp).
@@ -630,6 +639,7 @@ std::vector<std::string> types_json(const Exemplar& data, const MeshPath& mesh_p
         for (const auto& [topology, name] : topology_names)
             if (t.topology == topology) type["topology"] = name;
         if (t.sheet_columns != 0) type["columns"] = t.sheet_columns;
+        if (t.glyph == ElementGlyph::fish) type["glyph"] = "fish";
         types.push_back(type.dump());
     }
     return types;

@@ -27,13 +27,35 @@ Color lighter(Color c) {
     return {mix(c.r), mix(c.g), mix(c.b)};
 }
 
+// Elements drawn as a glyph (a fish) head where they move: their orientation is turned to
+// the motion from the frame before to the frame after (one-sided at the ends, and where the
+// element wrapped across the domain); an element at rest keeps its own.
+void turn_glyphs_to_motion(const Animation& a, int frame, Exemplar& out) {
+    const int last = a.frame_count() - 1;
+    const Vec3 extent = out.domain.bounds().size();
+    const double jump2 = 0.25 * std::min(extent.x * extent.x, extent.y * extent.y);
+    for (size_t e = 0; e < a.structure.elements.size(); ++e) {
+        Element& el = out.elements[e];
+        if (el.sample_count != 1 || out.types[el.type].glyph == ElementGlyph::disk) continue;
+        const Vec3 here = a.at(frame, el.first_sample);
+        Vec3 before = a.at(std::max(0, frame - 1), el.first_sample), after = a.at(std::min(last, frame + 1), el.first_sample);
+        if (squared_norm(after - here) > jump2) after = here;
+        if (squared_norm(here - before) > jump2) before = here;
+        const Vec3 v = after - before;
+        if (std::hypot(v.x, v.y) < 1e-12) continue;
+        el.orientation = Quat::from_angle_z(std::atan2(v.y, v.x));
+    }
+}
+
 // Frame `frame` with a path element of `length` samples (frames frame - length + 1 .. frame)
 // for every single-sample element; frames before the first repeat it, so that every frame of
 // an animation has the same types (and legend). A jump longer than half the domain (an
 // element wrapped across it) cuts the path: the samples before it repeat the first after it.
 Exemplar frame_with_paths(const Animation& a, int frame, int length) {
     Exemplar out = a.frame(frame);
-    if (length < 2 || out.dimension != 2) return out;
+    if (out.dimension != 2) return out;
+    turn_glyphs_to_motion(a, frame, out);
+    if (length < 2) return out;
     const std::vector<Color> colors = type_colors(out);
     const size_t types = out.types.size();
     std::vector<int> path_type(types, -1);

@@ -1,12 +1,14 @@
 // 2D PNG preview: white background, grey domain outline, single-sample elements
 // as anti-aliased disks with a slightly darker rim (so touching disks stay
-// distinct) and an orientation tick, multi-sample elements as thick polylines
+// distinct) and an orientation tick, or as the glyph of their type (a fish along their
+// heading), multi-sample elements as thick polylines
 // through their samples with dots at the samples. Drawn in element order, in the
 // colours of type_colors, with the legend strip below.
 #include <algorithm>
 #include <cmath>
 
 #include "render/class_colors.hpp"
+#include "render/glyphs.hpp"
 #include "render/grid.hpp"
 #include "render/legend.hpp"
 #include "render/palette.hpp"
@@ -39,6 +41,23 @@ void draw_disk_element(Canvas& canvas, const Frame2D& f, const Style& style, con
         canvas.add_capsule(cx, cy, cx + 0.85 * r * ux, cy + 0.85 * r * uy, std::clamp(0.1 * r, 0.6, 3.0));
         canvas.composite(darker(color, 0.45f));
     }
+}
+
+// A glyph (glyphs.hpp) turned to the element's x axis (+x when it has no rotation).
+void draw_glyph_element(Canvas& canvas, const Frame2D& f, const Style& style, const Element& e, Rgb color) {
+    const double r = std::max(min_radius_px, style.radius_of(e) * f.scale);
+    const Vec3 axis = e.orientation.rotate({1.0, 0.0, 0.0});
+    const double len = std::hypot(axis.x, axis.y);
+    const double ux = len > 1e-6 ? axis.x / len : 1.0, uy = len > 1e-6 ? -axis.y / len : 0.0;  // picture y down
+    const double cx = f.px(e.position.x), cy = f.py(e.position.y);
+    // Element frame (a along the heading, b across, y up) to pixels.
+    const auto px = [&](double a, double b) { return cx + r * (a * ux + b * uy); };
+    const auto py = [&](double a, double b) { return cy + r * (a * uy - b * ux); };
+    for (const GlyphPart& g : fish_glyph()) {
+        if (g.ax == g.bx && g.ay == g.by) canvas.add_disk(px(g.ax, g.ay), py(g.ax, g.ay), g.radius * r);
+        else canvas.add_capsule(px(g.ax, g.ay), py(g.ax, g.ay), px(g.bx, g.by), py(g.bx, g.by), g.radius * r);
+    }
+    canvas.composite(color);
 }
 
 void draw_polyline_element(Canvas& canvas, const Frame2D& f, const Style& style, const Exemplar& data,
@@ -94,7 +113,9 @@ std::string render_png_2d(const Exemplar& data, const RenderOptions& options) {
     }
     if (options.show_domain) draw_domain_outline(canvas, frame, data.domain);
     for (const auto& e : data.elements) {
-        if (e.sample_count <= 1)
+        if (e.sample_count <= 1 && data.types[e.type].glyph == ElementGlyph::fish)
+            draw_glyph_element(canvas, frame, style, e, colors[e.type]);
+        else if (e.sample_count <= 1)
             draw_disk_element(canvas, frame, style, e, colors[e.type]);
         else
             draw_polyline_element(canvas, frame, style, data, e, colors[e.type], options.show_samples);

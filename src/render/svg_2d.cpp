@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "render/class_colors.hpp"
+#include "render/glyphs.hpp"
 #include "render/legend.hpp"
 #include "render/palette.hpp"
 #include "render/render_internal.hpp"
@@ -42,6 +43,28 @@ void write_disk(std::ostream& out, const SvgNumbers& num, double px_size, const 
         out << "<line x1=\"" << num(x) << "\" y1=\"" << num(y) << "\" x2=\"" << num(tx) << "\" y2=\"" << num(ty)
             << "\" stroke=\"" << to_hex(darker(color, 0.45f)) << "\" stroke-width=\""
             << num(2.0 * std::clamp(0.1 * r_px, 0.6, 3.0) * px_size) << "\" stroke-linecap=\"round\"/>\n";
+    }
+}
+
+// A glyph (glyphs.hpp) turned to the element's x axis, in data units: disks as circles,
+// segments as round-capped lines of the fill colour, as the PNG draws them.
+void write_glyph(std::ostream& out, const SvgNumbers& num, double px_size, const Element& e, const Style& style,
+                 Rgb color) {
+    const double r = std::max(min_radius_px * px_size, style.radius_of(e));
+    const Vec3 axis = e.orientation.rotate({1.0, 0.0, 0.0});
+    const double len = std::hypot(axis.x, axis.y);
+    const double ux = len > 1e-6 ? axis.x / len : 1.0, uy = len > 1e-6 ? axis.y / len : 0.0;
+    const auto x = [&](double a, double b) { return e.position.x + r * (a * ux - b * uy); };
+    const auto y = [&](double a, double b) { return e.position.y + r * (a * uy + b * ux); };
+    for (const GlyphPart& g : fish_glyph()) {
+        if (g.ax == g.bx && g.ay == g.by) {
+            out << "<circle cx=\"" << num(x(g.ax, g.ay)) << "\" cy=\"" << num(y(g.ax, g.ay)) << "\" r=\""
+                << num(g.radius * r) << "\" stroke=\"none\"/>\n";
+        } else {
+            out << "<line x1=\"" << num(x(g.ax, g.ay)) << "\" y1=\"" << num(y(g.ax, g.ay)) << "\" x2=\""
+                << num(x(g.bx, g.by)) << "\" y2=\"" << num(y(g.bx, g.by)) << "\" stroke=\"" << to_hex(color)
+                << "\" stroke-width=\"" << num(2.0 * g.radius * r) << "\" stroke-linecap=\"round\"/>\n";
+        }
     }
 }
 
@@ -104,7 +127,9 @@ std::string render_svg_2d(const Exemplar& data, const RenderOptions& options) {
                 << to_hex(darker(color, 0.72f)) << "\">\n";
             open_type = e.type;
         }
-        if (e.sample_count <= 1)
+        if (e.sample_count <= 1 && data.types[e.type].glyph == ElementGlyph::fish)
+            write_glyph(out, num, px_size, e, style, colors[e.type]);
+        else if (e.sample_count <= 1)
             write_disk(out, num, px_size, e, style, colors[e.type]);
         else
             write_polyline(out, num, px_size, data, e, style, colors[e.type], options.show_samples);

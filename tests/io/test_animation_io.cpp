@@ -34,6 +34,7 @@ Animation test_animation(int dimension) {
     ex.types[noodle].rigid = false;
     ex.types[cloth].topology = ElementTopology::sheet;
     ex.types[cloth].sheet_columns = 3;
+    ex.types[dot].glyph = ElementGlyph::fish;
     const double z = dimension == 3 ? 0.7 : 0.0;
     ex.add_element(dot, {{1.0 / 3, 2, z}}, 0.25);
     ex.add_element(dot, {{4, 1.0 / 7, z}}, 0.5);
@@ -75,6 +76,7 @@ void expect_same_animation(const Animation& a, const Animation& b, bool types_ex
         EXPECT_EQ(a.structure.types[t].rigid, b.structure.types[t].rigid);
         EXPECT_EQ(a.structure.types[t].topology, b.structure.types[t].topology);
         EXPECT_EQ(a.structure.types[t].sheet_columns, b.structure.types[t].sheet_columns);
+        EXPECT_EQ(a.structure.types[t].glyph, b.structure.types[t].glyph);
     }
     ASSERT_EQ(a.structure.elements.size(), b.structure.elements.size());
     for (size_t i = 0; i < a.structure.elements.size(); ++i) {
@@ -309,6 +311,8 @@ TEST(IoAnimationJson, RejectsUnknownAndMisplacedKeys) {
                       "elements[1]: missing \"id\" (required in an animated file");
     expect_json_error(animated(R"({"name": "dot", "topology": "rope"})", dot_elements, dot_frame(0)),
                       "types[0].topology: unknown topology 'rope'");
+    expect_json_error(animated(R"({"name": "dot", "glyph": "whale"})", dot_elements, dot_frame(0)),
+                      "types[0].glyph: unknown glyph 'whale' (known: disk, fish)");
     expect_json_error(animated(dot_types, dot_elements, "{}"), "frames[0]: missing \"time\"");
     expect_json_error(animated(dot_types, dot_elements, ""), "frames: must hold at least one frame");
 }

@@ -3,10 +3,15 @@
 // ticks, polylines for multi-sample elements, option errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "render/render_test_util.hpp"
 #include "render/style.hpp"
+#include "tessera/animation.hpp"
+#include "tessera/animation_render.hpp"
 #include "tessera/error.hpp"
 #include "tessera/render.hpp"
 
@@ -90,6 +95,61 @@ TEST(Render2d, OrientationTickIsDarker) {
     const auto below = img.at(static_cast<int>(f.px(5)), static_cast<int>(f.py(4)));
     EXPECT_LE(test::color_distance(below, fill), 1);
     EXPECT_LT(above.r + above.g + above.b, 0.8f * (fill.r + fill.g + fill.b));
+}
+
+// Second moments of the non-white pixels: how far the ink spreads along x and along y.
+std::pair<double, double> ink_spread(const test::Image& img, int rows) {
+    double n = 0, sx = 0, sy = 0, sxx = 0, syy = 0;
+    for (int y = 0; y < rows; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const auto c = img.at(x, y);
+            if (c.r + c.g + c.b > 2.9f) continue;
+            n += 1, sx += x, sy += y, sxx += double(x) * x, syy += double(y) * y;
+        }
+    return {sxx / n - (sx / n) * (sx / n), syy / n - (sy / n) * (sy / n)};
+}
+
+TEST(Render2d, AFishGlyphIsLongAlongItsHeadingInPngAndSvg) {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    const int fish = ex.type_index("fish");
+    ex.types[fish].glyph = ElementGlyph::fish;
+    ex.add_element(fish, {Vec3{5, 5, 0}}, 2.0);
+    const RenderOptions options{.width = 400, .show_domain = false, .show_legend = false};
+    const auto along_x = ink_spread(test::decode_png(render_png(ex, options)), 400);
+    EXPECT_GT(along_x.first, 3.0 * along_x.second);  // heading +x without a rotation
+    ex.elements[0].orientation = Quat::from_angle_z(std::acos(-1.0) / 2.0);
+    const auto along_y = ink_spread(test::decode_png(render_png(ex, options)), 400);
+    EXPECT_GT(along_y.second, 3.0 * along_y.first);
+    EXPECT_NEAR(along_y.second, along_x.first, 0.05 * along_x.first);  // the same fish, turned
+    // The SVG draws it from the same parts, turned the same way: its tail lobes lie below
+    // the centre (heading +y: the tail towards -y).
+    const std::string svg = render_svg(ex, options);
+    double low = 5, high = 5;  // the y range of the glyph's strokes, data units
+    for (const char* key : {" y1=\"", " y2=\""})
+        for (size_t at = svg.find(key); at != std::string::npos; at = svg.find(key, at + 1)) {
+            const double y = std::stod(svg.substr(at + 5));
+            low = std::min(low, y), high = std::max(high, y);
+        }
+    EXPECT_LT(low, 5.0 - 2.0) << "the tail, more than a radius behind the centre";
+    EXPECT_LT(high, 5.0 + 2.0) << "the snout, within the radius ahead";
+    EXPECT_GT(high, 5.0 + 1.0);
+}
+
+TEST(Render2d, AnAnimatedFishHeadsWhereItMoves) {
+    Exemplar ex;
+    ex.domain = Domain::box({0, 0, 0}, {10, 10, 0}, 2);
+    const int fish = ex.type_index("fish");
+    ex.types[fish].glyph = ElementGlyph::fish;
+    ex.add_element(fish, {Vec3{5, 4, 0}}, 2.0);
+    Animation a = animation_from_exemplar(ex);
+    a.add_frame(1.0, {Vec3{5, 5, 0}});
+    a.add_frame(2.0, {Vec3{5, 6, 0}});  // swimming +y; its own orientation says +x
+    AnimationRenderOptions options;
+    options.picture = RenderOptions{.width = 400, .show_domain = false, .show_legend = false};
+    options.trail = 1;  // the frame alone
+    const auto spread = ink_spread(test::decode_png(render_trails_png(a, 1, options)), 400);
+    EXPECT_GT(spread.second, 3.0 * spread.first);
 }
 
 TEST(Render2d, MultiSampleElementsArePolylines) {
