@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "dynamic/detail_field.hpp"
 #include "dynamic/detail_patches.hpp"
+#include "dynamic/element_contacts.hpp"
 #include "dynamic/element_lengths.hpp"
 #include "dynamic/local_frames.hpp"
 #include "tessera/dynamic.hpp"
@@ -25,6 +26,10 @@ using namespace dynamic;
 
 constexpr double length_tolerance = 0.005;  // edges within 0.5 % of their rest length
 constexpr int length_sweeps = 200;          // bound on the projection's sweeps
+constexpr double contact_quantile = 0.02;   // the exemplar's closest approach between elements
+constexpr double contact_tolerance = 0.02;  // pairs within 2 % of their contact distance
+constexpr int contact_sweeps = 50;          // bound on the contact sweeps per frame
+constexpr int constraint_passes = 8;        // bound on the alternations of lengths and contacts
 
 std::string topology_text(ElementTopology t) {
     return t == ElementTopology::thread ? "thread" : t == ElementTopology::sheet ? "sheet" : "none";
@@ -125,6 +130,33 @@ void decompose_into(const Animation& coarse, const std::vector<LocalFrame>& fram
     for (size_t k = 0; k < p.size(); ++k) out.detail[k] = frames[k].to_local(p[k] - coarse.positions[k]);
 }
 
+// Rest lengths and contacts between elements (element_contacts.hpp), alternated so that
+// both hold together (each pass of one disturbs the other a little): lengths last, so that
+// threads and sheets end at their rest lengths.
+struct Constraints {
+    const std::vector<std::vector<Edge>>& edges;
+    const std::vector<Vec3>& coarse;
+    std::vector<int> element_of;
+    int frames = 0, samples = 0, dimension = 2, threads = 0;
+    double contact = 0.0;
+
+    void apply(std::vector<Vec3>& p, LengthReport& lengths, ContactReport& contacts) const {
+        for (int pass = 0; pass < constraint_passes; ++pass) {
+            lengths = keep_lengths(p, frames, samples, edges, length_tolerance, length_sweeps, threads);
+            contacts = keep_apart(p, coarse, element_of, frames, samples, dimension, contact, contact_tolerance,
+                                  contact_sweeps, threads);
+            if (contacts.worst_gap == 0.0) break;  // nothing was too close: the lengths hold as they are
+        }
+        lengths = keep_lengths(p, frames, samples, edges, length_tolerance, length_sweeps, threads);
+    }
+};
+
+std::vector<int> element_of_samples(const Exemplar& data) {
+    std::vector<int> of(data.samples.size());
+    for (size_t s = 0; s < of.size(); ++s) of[s] = data.samples[s].element;
+    return of;
+}
+
 // The exemplar's typical detail size, the unit of the cost of an unpaired entry.
 double unpaired_cost(const DetailField& in) {
     double sum = 0.0;
@@ -171,7 +203,16 @@ AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animat
     result.stats.seed = options.seed;
     result.stats.threads = core::resolve_threads(options.threads);
     result.stats.init_seconds = elapsed();
+    const Constraints constraints{edges,
+                                  coarse.positions,
+                                  element_of_samples(coarse.structure),
+                                  out.frames,
+                                  out.samples,
+                                  coarse.structure.dimension,
+                                  options.threads,
+                                  exemplar_contact_distance(exemplar, contact_quantile)};
     LengthReport lengths;
+    ContactReport contacts;
     std::vector<Vec3> positions = compose(coarse, frames, out);
     for (int round = 0; round < options.iterations; ++round) {
         const double round_start = elapsed();
@@ -180,8 +221,7 @@ AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animat
         std::swap(matches, next);
         out.detail = assign_details(in, out, matches, offsets, options.threads);
         positions = compose(coarse, frames, out);
-        lengths = keep_lengths(positions, out.frames, out.samples, edges, length_tolerance, length_sweeps,
-                               options.threads);
+        constraints.apply(positions, lengths, contacts);
         decompose_into(coarse, frames, positions, out);
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - round_start);
@@ -189,17 +229,19 @@ AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animat
                                                 double(round + 1) / options.iterations}))
             throw Cancelled();
     }
-    if (options.iterations == 0)
-        lengths = keep_lengths(positions, out.frames, out.samples, edges, length_tolerance, length_sweeps,
-                               options.threads);
+    if (options.iterations == 0) constraints.apply(positions, lengths, contacts);
     result.structure = coarse.structure;
     result.times = coarse.times;
     result.positions = std::move(positions);
-    result.stats.solver_bound_hits = lengths.bound_hits;
+    result.stats.solver_bound_hits = lengths.bound_hits + contacts.bound_hits;
     if (lengths.bound_hits > 0)
         result.stats.notes.push_back(std::to_string(lengths.bound_hits) + " element-frames stopped at the bound of " +
                                      std::to_string(length_sweeps) + " length sweeps (worst strain " +
                                      std::to_string(lengths.worst_strain) + ")");
+    if (contacts.bound_hits > 0)
+        result.stats.notes.push_back(std::to_string(contacts.bound_hits) + " frames stopped at the bound of " +
+                                     std::to_string(contact_sweeps) + " contact sweeps (largest gap left " +
+                                     std::to_string(contacts.worst_gap) + ")");
     result.stats.final_energy = result.stats.energy.empty() ? 0.0 : result.stats.energy.back();
     result.stats.total_seconds = elapsed();
     if (progress) progress(ProgressEvent{"done", options.iterations - 1, options.iterations, result.stats.final_energy,
