@@ -11,6 +11,7 @@
 
 #include "dynamic/all_frames.hpp"
 #include "dynamic/dynamic_fixtures.hpp"
+#include "dynamic/motion_checks.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
 #include "tessera/metrics.hpp"
@@ -18,30 +19,12 @@
 namespace {
 
 using namespace tessera;
+using dynamic_test::closest_pair;
 using dynamic_test::drifting_lattice;
+using dynamic_test::motion_stats;
+using dynamic_test::MotionStats;
 
 const Domain output_box = Domain::box({0, 0, 0}, {20, 17, 0}, 2);
-
-struct MotionStats {
-    Vec3 mean;
-    double speed_sd = 0.0, largest_step = 0.0;
-};
-
-// Per-frame velocities of every sample between frames [from, to).
-MotionStats motion_stats(const Animation& a, int from, int to) {
-    std::vector<Vec3> v;
-    for (int f = std::max(from, 1); f < to; ++f)
-        for (int s = 0; s < a.sample_count(); ++s) v.push_back(a.at(f, s) - a.at(f - 1, s));
-    MotionStats m;
-    for (const Vec3& x : v) m.mean += x;
-    m.mean = m.mean / static_cast<double>(v.size());
-    double var = 0.0;
-    for (const Vec3& x : v) var += squared_norm(x - m.mean), m.largest_step = std::max(m.largest_step, norm(x));
-    m.speed_sd = std::sqrt(var / static_cast<double>(v.size()));
-    return m;
-}
-
-double closest_pair(const Exemplar& frame) { return nearest_neighbor_distances(frame, 1).min; }
 
 DynamicOptions all_frames(int frames) {
     DynamicOptions o;
@@ -68,15 +51,7 @@ TEST(AllFrames, SteadyMotionKeepsVelocityAndArrangementInEveryFrame) {
     EXPECT_NEAR(got.mean.x, in.mean.x, 0.1 * norm(in.mean));
     EXPECT_NEAR(got.mean.y, in.mean.y, 0.1 * norm(in.mean));
     EXPECT_NEAR(got.speed_sd, in.speed_sd, 0.35 * in.speed_sd);
-    const Exemplar in_frame = ex.frame(2);
-    const double static_error = pcf_relative_error(in_frame, out.frame(0));
-    for (int f : {0, 4, 9, 15}) {
-        const Exemplar frame = out.frame(f);
-        EXPECT_LT(pcf_relative_error(in_frame, frame), std::max(0.2, 2.0 * static_error)) << "frame " << f;
-        EXPECT_GT(closest_pair(frame), 0.6 * closest_pair(in_frame)) << "frame " << f;
-        EXPECT_GT(mean_psi6(frame), 0.6) << "frame " << f;
-        for (const Sample& s : frame.samples) EXPECT_TRUE(output_box.inside(s.p));
-    }
+    dynamic_test::expect_lattice_kept(ex, out, {0, 4, 9, 15}, output_box);
 }
 
 TEST(AllFrames, OutputLongerThanTheExemplarContinuesTheMotion) {
