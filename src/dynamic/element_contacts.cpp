@@ -82,7 +82,7 @@ ContactReport keep_apart(std::vector<Vec3>& positions, const std::vector<Vec3>& 
                          double distance, double tolerance, int max_sweeps, int threads) {
     ContactReport report;
     if (!(distance > 0.0) || samples == 0) return report;
-    std::vector<double> left(frames, 0.0);
+    std::vector<double> left(frames, 0.0), found(frames, 0.0);
     core::parallel_for(frames, threads, [&](int begin, int end, int) {
         core::SpatialGrid grid;
         std::vector<Vec3> points, push;
@@ -90,14 +90,16 @@ ContactReport keep_apart(std::vector<Vec3>& positions, const std::vector<Vec3>& 
             Vec3* p = positions.data() + static_cast<size_t>(f) * samples;
             const Vec3* c = coarse.data() + static_cast<size_t>(f) * samples;
             double worst = sweep(p, c, element_of, samples, dimension, distance, grid, points, push);
+            found[f] = worst;
             for (int k = 1; k < max_sweeps && worst > tolerance * distance; ++k)
                 worst = sweep(p, c, element_of, samples, dimension, distance, grid, points, push);
             left[f] = worst;
         }
     });
-    for (double w : left) {
-        report.bound_hits += w > tolerance * distance;
-        report.worst_gap = std::max(report.worst_gap, w);
+    for (int f = 0; f < frames; ++f) {
+        report.bound_hits += left[f] > tolerance * distance;
+        report.worst_gap = std::max(report.worst_gap, left[f]);
+        report.first_gap = std::max(report.first_gap, found[f]);
     }
     return report;
 }

@@ -22,6 +22,8 @@ double exemplar_contact_distance(const Animation& exemplar, double quantile);
 struct ContactReport {
     int bound_hits = 0;       // frames whose sweeps stopped at the bound with pairs still too close
     double worst_gap = 0.0;   // the largest shortfall left, data units
+    double first_gap = 0.0;   // the largest shortfall found before any push (how far the
+                              // positions given were from holding the contacts)
 };
 
 // Pushes apart, frame by frame (frames in parallel; the same result for any thread count),

@@ -145,7 +145,8 @@ struct Constraints {
             lengths = keep_lengths(p, frames, samples, edges, length_tolerance, length_sweeps, threads);
             contacts = keep_apart(p, coarse, element_of, frames, samples, dimension, contact, contact_tolerance,
                                   contact_sweeps, threads);
-            if (contacts.worst_gap == 0.0) break;  // nothing was too close: the lengths hold as they are
+            // The last lengths pass left the contacts within tolerance: nothing more to alternate.
+            if (contacts.first_gap <= contact_tolerance * contact) break;
         }
         lengths = keep_lengths(p, frames, samples, edges, length_tolerance, length_sweeps, threads);
     }
