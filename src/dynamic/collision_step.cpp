@@ -1,26 +1,13 @@
 #include "dynamic/collision_step.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include "dynamic/element_contacts.hpp"
 
 namespace tessera::dynamic {
 
+// Every particle is an element of its own, so the closest approach between elements is the
+// closest approach between samples.
 double exemplar_collision_radius(const Animation& exemplar, double quantile) {
-    const int n = exemplar.sample_count();
-    std::vector<double> nearest;
-    nearest.reserve(static_cast<size_t>(n) * exemplar.frame_count());
-    for (int f = 0; f < exemplar.frame_count(); ++f)
-        for (int a = 0; a < n; ++a) {
-            double best = std::numeric_limits<double>::infinity();
-            for (int b = 0; b < n; ++b)
-                if (b != a) best = std::min(best, squared_norm(exemplar.at(f, a) - exemplar.at(f, b)));
-            if (std::isfinite(best)) nearest.push_back(std::sqrt(best));
-        }
-    if (nearest.empty()) return 0.0;
-    const size_t k = std::min(nearest.size() - 1, static_cast<size_t>(quantile * nearest.size()));
-    std::nth_element(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(k), nearest.end());
-    return 0.5 * nearest[k];
+    return 0.5 * exemplar_contact_distance(exemplar, quantile);
 }
 
 CollisionStep::CollisionStep(const Animation& exemplar, const Domain& domain, bool periodic)

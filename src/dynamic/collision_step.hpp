@@ -47,8 +47,8 @@ private:
     Arrangement scratch_;  // one sphere per particle, rebuilt in place every frame
 };
 
-// Half the `quantile` of the nearest-neighbour distances of the exemplar's samples, pooled
-// over its frames (brute force: exemplars are small). 0 when no frame has two samples.
+// Half the `quantile` of the nearest-neighbour distances of the exemplar's particles, pooled
+// over its frames (exemplar_contact_distance). 0 when the exemplar has one particle.
 double exemplar_collision_radius(const Animation& exemplar, double quantile);
 
 }  // namespace tessera::dynamic

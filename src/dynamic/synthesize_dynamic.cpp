@@ -148,12 +148,12 @@ public:
           out_(params.dimension, sample_types(first, exemplar.structure), options.matches, params,
                periodic_of(domain, options)),
           flow_(domain, options.threads, squared_norm(options.flow) > 0.0),
-          collisions_(exemplar, domain, options.wrap),
           scratch_(core::resolve_threads(options.threads)),
           settings_{options.search, options.random_candidates, options.seed, 0, true} {
         if (options.search == SearchMode::kcoherence)
             build_similarity(input_, params, similarity_k, similarity_scan, options.seed, options.threads);
         for (size_t s = 0; s < first.samples.size(); ++s) out_.current()[s] = first.samples[s].p;
+        if (options.physics) collisions_.emplace(exemplar, domain, options.wrap);
     }
 
     // Frame 0, the static method's arrangement as it is (with physics, its collisions
@@ -192,7 +192,7 @@ private:
     // The physics sub-step (Figure 5): what it moves is detail motion, so the samples'
     // flow shifts stay; a sample pushed across the wrap seam re-enters as advection's do.
     void resolve_collisions() {
-        collisions_.apply(out_.current());
+        collisions_->apply(out_.current());
         for (int s = 0; s < out_.size(); ++s)
             keep_inside(out_.current()[s], out_.current_shift()[s], domain_, options_.wrap);
     }
@@ -208,7 +208,7 @@ private:
     InputFrames input_;
     OutputFrames out_;
     ObstacleFlow flow_;
-    CollisionStep collisions_;
+    std::optional<CollisionStep> collisions_;  // the physics sub-step, when asked for
     std::vector<SearchScratch> scratch_;
     SearchSettings settings_;
 };
