@@ -143,6 +143,8 @@ void run_grow(GrowArgs& args) {
                       result.elements.size(), report.added, report.rounds, report.seconds, report.energy);
         std::cerr << line;
         if (report.bound_hit) std::cerr << "; stopped by --max-rounds " << args.options.max_rounds;
+        if (report.uncovered > 0)
+            std::cerr << "; " << report.uncovered << " of them filled in where the horizon stopped";
         std::cerr << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview) << std::endl;
     }
 }

@@ -82,6 +82,10 @@ struct GrowOptions {
     double exploit = 1.0;
     // Bound on the rounds of one grow() call (reported when hit).
     int max_rounds = 10000;
+    // grow(region): stop where the horizon proposes nothing, as the paper does, instead of
+    // filling what it did not reach (places farther from every element than twice the
+    // exemplar's largest hole plus its spacing) by neighbourhood synthesis next to it.
+    bool stop_at_horizon = false;
     // Local orientation field of the output (patches are rotated by it).
     OrientationField field;
     int threads = 0;  // 0 = all hardware threads; results are identical for every value
@@ -100,6 +104,7 @@ struct GrowReport {
     int last_made = 0;       // elements the last round made (before displacements)
     int displaced = 0;       // recent elements a candidate of a type short of its share replaced
     int filled = 0;          // elements put into enclosed holes behind the horizon
+    int uncovered = 0;       // grow(region): elements put where the horizon did not reach
     bool covered = false;    // grow(region): the region took no more elements
     bool bound_hit = false;  // the round bound (GrowOptions::max_rounds) stopped the call
     double energy = 0.0;     // mean neighbourhood energy of the last round's horizon (Eq. 4 / |H|)

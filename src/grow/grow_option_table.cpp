@@ -71,6 +71,11 @@ OptionTable<O> make_table() {
     t.push_back(integer_row<O>(
         "max_rounds", "Bound on the rounds of one grow call (reported when it stops the growth).",
         [](auto& o) -> auto& { return o.max_rounds; }, at_least(1)));
+    t.push_back(flag_row<O>(
+        "stop_at_horizon",
+        "With a region: stop where the horizon proposes nothing (the paper's growth) instead "
+        "of filling what it did not reach by neighbourhood synthesis next to it.",
+        [](auto& o) -> auto& { return o.stop_at_horizon; }));
     t.push_back(text_row<O>(
         "field", field_doc, [](const O& o) { return o.field.active() ? o.field.describe() : std::string(); },
         [](O& o, const std::string& text, const OptionContext& c) {

@@ -29,7 +29,10 @@ struct OutElement {
     Quat frame;
     int match = -1;  // input element its neighbourhood matched best last time
     int born = 0;    // round that made it
-    bool locked = false;
+    bool locked = false;  // never moved: an existing element, or one of the fill (`filled`)
+    // Put by the fill of what growth did not reach (grow/uncovered.hpp): fixed for growth
+    // like an existing element, but not locked in the caller's arrangement.
+    bool filled = false;
     int tries = 0;  // as Candidate::tries, while it is being filtered
     int crowd = 0;  // other elements within Impl::crowd's radius (kept only while it is active)
     std::uint64_t id = 0;

@@ -7,6 +7,7 @@
 #include "core/rng.hpp"
 #include "grow/grow_state.hpp"
 #include "grow/round.hpp"
+#include "grow/uncovered.hpp"
 #include "grow/vacancies.hpp"
 #include "tessera/error.hpp"
 
@@ -286,6 +287,12 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         report.added += filled;
         if (filled > 0) g.dirty = true;
     }
+    if (report.covered && !g.options.stop_at_horizon) {
+        const int uncovered = grow::fill_uncovered(g, region, arrangement());
+        report.uncovered += uncovered;
+        report.added += uncovered;
+        report.seconds = std::chrono::duration<double>(Clock::now() - g.t0).count();
+    }
     g.last_report = report;
     return report;
 }
@@ -354,7 +361,7 @@ const Arrangement& Grower::arrangement() const {
         e.scale = from.scale;
         e.attributes = from.attributes;
         e.id = o.id;
-        e.locked = o.locked;
+        e.locked = o.locked && !o.filled;
         for (const Vec3& q : samples) extend(box, has, Box{q, q});
     }
     const double margin = 0.5 * g.metric.params.spacing;

@@ -206,6 +206,41 @@ TEST(Grow, InhibitedRealPatternsKeepTheirDensityUnderTheCountCeiling) {
     }
 }
 
+// A clustered pattern (redwood seedlings: tight clusters, wide gaps): the horizon's patches
+// do not reach across the gaps, so the paper's rounds stop after a few clusters; the rest
+// of the region is filled next to them (grow/uncovered.hpp) and the whole region holds
+// clusters at the exemplar's density, with no hole or crowding beyond the exemplar's.
+TEST(Grow, AClusteredPatternFillsItsWholeRegionWhereTheHorizonStops) {
+    const Exemplar ex = test::field_pattern("redwood");
+    const Box b = ex.domain.bounds();
+    const double s = std::sqrt(20.0);
+    const Domain region = Domain::box(b.lo, b.lo + Vec3{s * b.size().x, s * b.size().y, 0}, 2);
+    const double expected = 20.0 * ex.elements.size();
+
+    GrowOptions paper;
+    paper.stop_at_horizon = true;
+    Grower stopped(ex, paper);
+    stopped.grow(region);
+    EXPECT_LT(stopped.arrangement().elements.size(), 0.5 * expected) << "the horizon alone covered the region";
+
+    Grower g(ex);
+    const GrowReport r = g.grow(region);
+    Arrangement out = g.arrangement();
+    out.domain = region;
+    EXPECT_GT(r.uncovered, 0);
+    EXPECT_NEAR(out.elements.size() / expected, 1.0, 0.1);
+    for (const Element& e : out.elements) {
+        EXPECT_FALSE(e.locked) << "a filled element is locked in the output";
+        EXPECT_TRUE(region.inside(e.position));
+    }
+    expect_no_crowding(ex, out, "redwood");
+    expect_no_hole(ex, out, "redwood");
+    DetOptions det_options;
+    det_options.threads = 2;
+    const Arrangement det = synthesize_det(ex, region, det_options);
+    EXPECT_LT(pcf_relative_error(ex, out), 2.0 * pcf_relative_error(ex, det)) << "clusters lost";
+}
+
 TEST(Grow, TwoClassGrownInTwoCallsMatchesOneCallInSharesAndPcf) {
     const Exemplar ex = example("two_class_2d");
     const Box b = ex.domain.bounds();
