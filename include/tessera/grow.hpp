@@ -86,6 +86,11 @@ struct GrowOptions {
     // filling what it did not reach (places farther from every element than twice the
     // exemplar's largest hole plus its spacing) by neighbourhood synthesis next to it.
     bool stop_at_horizon = false;
+    // grow(region): sweeps of the final pair-correlation relaxation of the call's elements,
+    // as synthesize_det's (DetOptions::relax_sweeps); 0 = none; negative = automatic: 4 for
+    // a soft pattern (closest pairs well under the typical distance: most field data), 0
+    // where a hard core holds the pair correlation. Single-sample exemplars.
+    int relax_sweeps = -1;
     // Local orientation field of the output (patches are rotated by it).
     OrientationField field;
     int threads = 0;  // 0 = all hardware threads; results are identical for every value
@@ -105,6 +110,7 @@ struct GrowReport {
     int displaced = 0;       // recent elements a candidate of a type short of its share replaced
     int filled = 0;          // elements put into enclosed holes behind the horizon
     int uncovered = 0;       // grow(region): elements put where the horizon did not reach
+    int relaxed = 0;         // grow(region): moves the pair-correlation relaxation kept
     bool covered = false;    // grow(region): the region took no more elements
     bool bound_hit = false;  // the round bound (GrowOptions::max_rounds) stopped the call
     double energy = 0.0;     // mean neighbourhood energy of the last round's horizon (Eq. 4 / |H|)

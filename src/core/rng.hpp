@@ -34,6 +34,7 @@ enum class Purpose : std::uint64_t {
     dynamic_detail = 14,     // dynamic on a coarse motion: random candidates of the detail search
     dynamic_patch = 15,      // dynamic on a coarse motion: the first patch copied onto each element
     dynamic_graph = 16,      // graph synthesis: its node pool and the annealing of its motion paths
+    dequantize = 17,         // rounded exemplars: the draw within each coordinate's rounding cell
     test = 99
 };
 

@@ -143,6 +143,8 @@ std::vector<double> sum_to_g(const std::vector<long>& count, int types, int bins
 
 int PairRelaxation::pair_index(int a, int b) const { return slot_of(a, b, types_); }
 
+double PairRelaxation::max_step() const { return kStepSpacings * spacing_; }
+
 PairRelaxation::PairRelaxation(const Exemplar& exemplar, const Params& params) {
     // Not for layers: a layer's statistics live in its plane, not in the 3D pair correlation.
     applies_ = !exemplar.has_multi_sample_elements() && exemplar.elements.size() >= 8 && params.spacing > 0.0 &&

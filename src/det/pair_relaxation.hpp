@@ -28,6 +28,8 @@ public:
 
     // Whether the exemplar is one the relaxation applies to (single-sample elements).
     bool applies() const { return applies_; }
+    // How far one sweep moves an element at most (its largest trial step).
+    double max_step() const;
 
     struct Report {
         int moves = 0;          // steps kept

@@ -76,6 +76,12 @@ OptionTable<O> make_table() {
         "With a region: stop where the horizon proposes nothing (the paper's growth) instead "
         "of filling what it did not reach by neighbourhood synthesis next to it.",
         [](auto& o) -> auto& { return o.stop_at_horizon; }));
+    t.push_back(integer_row<O>(
+        "relax_sweeps",
+        "With a region: sweeps of the final pair-correlation relaxation of the elements grown "
+        "(as 'tessera synth'); 0 = none; negative = automatic (4 for a soft pattern, whose "
+        "closest pairs lie well under its typical distance, else 0). Single-sample elements.",
+        [](auto& o) -> auto& { return o.relax_sweeps; }, between(-1, 1000)));
     t.push_back(text_row<O>(
         "field", field_doc, [](const O& o) { return o.field.active() ? o.field.describe() : std::string(); },
         [](O& o, const std::string& text, const OptionContext& c) {

@@ -4,11 +4,13 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/crowding_repair.hpp"
 #include "core/dynamic_grid.hpp"
 #include "core/interrupt.hpp"
+#include "det/pair_relaxation.hpp"
 #include "grow/crowd_ceiling.hpp"
 #include "grow/input_elements.hpp"
 #include "grow/pairing.hpp"
@@ -80,6 +82,11 @@ struct Grower::Impl {
     // single-sample elements only (`fills_holes`).
     double hole_radius = 0.0;
     bool fills_holes = false;
+    // The final pair-correlation relaxation of grow(region) (grow/relax.hpp): its sweeps
+    // (GrowOptions::relax_sweeps, the automatic choice resolved), and the relaxation when
+    // there are some (it applies to exemplars of single-sample elements).
+    int relax_sweeps = 0;
+    std::optional<det::PairRelaxation> relaxation;
     // Per type pair (row: a candidate's type, column: an existing element's): whether the
     // candidate must lie in its proposer's Voronoi cell (grow/generate.cpp, propose). Set for
     // single-sample exemplars where the pair's closest distance is well under its typical

@@ -7,6 +7,7 @@
 #include "core/rng.hpp"
 #include "grow/grow_state.hpp"
 #include "grow/round.hpp"
+#include "grow/relax.hpp"
 #include "grow/uncovered.hpp"
 #include "grow/vacancies.hpp"
 #include "tessera/error.hpp"
@@ -60,7 +61,7 @@ void report_progress(Grower::Impl& g, const char* stage, int round, int rounds, 
 // Rounds until `done` says so, no round adds anything, or the bound.
 template <class Done, class Fraction>
 GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done& done,
-                      const Fraction& fraction, int seeded) {
+                      const Fraction& fraction, int seeded, bool last_stage = true) {
     GrowReport report;
     report.added = seeded;  // the seed patch is made by this call too
     const auto start = Clock::now();
@@ -95,7 +96,7 @@ GrowReport run_rounds(Grower::Impl& g, const grow::RoundLimits& base, const Done
             break;
         }
     }
-    report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
+    if (last_stage) report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
     keep();
     return report;
 }
@@ -277,7 +278,7 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         [&](const GrowReport&) {
             return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected));
         },
-        seeded);
+        seeded, false);
     // Covered: the last two rounds are enclosed now (by later elements or the region's outside).
     const size_t r = g.round_first.size();
     if (report.covered && r > 0) {
@@ -291,8 +292,10 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         const int uncovered = grow::fill_uncovered(g, region, arrangement());
         report.uncovered += uncovered;
         report.added += uncovered;
-        report.seconds = std::chrono::duration<double>(Clock::now() - g.t0).count();
     }
+    grow::relax_pair_correlation(g, region, static_cast<int>(start), report);
+    report.seconds = std::chrono::duration<double>(Clock::now() - g.t0).count();
+    report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
     g.last_report = report;
     return report;
 }

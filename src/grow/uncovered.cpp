@@ -2,6 +2,7 @@
 #include "grow/uncovered.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/parallel.hpp"
@@ -154,6 +155,7 @@ int fill_uncovered(Grower::Impl& g, const Domain& region, const Arrangement& cur
         ProgressEvent f = e;
         f.stage = "uncovered";
         f.fraction = 0.99;
+        f.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - g.t0).count();
         g.last_event = f;
         return !g.progress || g.progress(f);
     });

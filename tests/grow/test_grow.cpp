@@ -176,6 +176,19 @@ GrownField grown_field_pattern(const std::string& name) {
     return f;
 }
 
+// The pair correlation of a grown field pattern against synthesize_det's into the same
+// region: rounded coordinates put grown elements on a lattice, and growth's own steps do not
+// hold a soft pattern's pair correlation (grown Japanese pines had 0.31 against 0.03, ganglia
+// 0.16 against 0.04) until the rounding was undone and the final relaxation added
+// (docs/grow.md).
+void expect_pcf_near_det(const Exemplar& ex, const Arrangement& out, const std::string& name) {
+    DetOptions o;
+    o.threads = 2;
+    const Arrangement det = synthesize_det(ex, out.domain, o);
+    const double e_grow = pcf_relative_error(ex, out), e_det = pcf_relative_error(ex, det);
+    EXPECT_LT(e_grow, 1.5 * e_det + 0.07) << name << ": PCF error " << e_grow << ", synthesize_det's " << e_det;
+}
+
 // Real patterns whose closest pair is far under their typical spacing (retinal mosaics of
 // two independent-looking classes, near-random pines): the hard core does not hold their
 // density, so a horizon element's patch fills only its own Voronoi cell. Without it, these
@@ -190,6 +203,7 @@ TEST(Grow, SoftRealPatternsKeepTheirDensityAndClassSharesAt20TimesTheirWindow) {
         for (size_t t = 0; t < types; ++t)
             EXPECT_NEAR(got_share[t], want_share[t], 0.05 * want_share[t]) << name << " " << ex.types[t].name;
         expect_no_crowding(ex, out, name);
+        expect_pcf_near_det(ex, out, name);
     }
 }
 
@@ -203,6 +217,7 @@ TEST(Grow, InhibitedRealPatternsKeepTheirDensityUnderTheCountCeiling) {
         EXPECT_NEAR(ratio, 1.0, 0.15) << name << ": " << out.elements.size() << " elements";
         expect_no_crowding(ex, out, name);
         expect_no_hole(ex, out, name);  // inside the region grown
+        expect_pcf_near_det(ex, out, name);
     }
 }
 
