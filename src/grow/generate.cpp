@@ -345,8 +345,31 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
     // noodle bent otherwise rather than none (growth filled 75% of a noodle exemplar's
     // density when every such candidate was dropped). Returns true when c was reshaped.
     std::vector<Vec3> trial;
+    // Whether the place holds as many elements within r as the exemplar's typical one.
+    const double count_radius = g.metric.params.radius;
+    auto count_near = [&](const Vec3& p) {
+        int n = 0;
+        g.grid.for_each_within(
+            p, count_radius, [&](int i) { return g.out[i].p; },
+            [&](int i) { n += !(i >= g.recent_first && displaced[i - g.recent_first]); });
+        taken_grid.for_each_within(
+            p, count_radius, [&](int i) { return kept[i].p; }, [&](int) { ++n; });
+        return n;
+    };
+    std::vector<int> around;
+    auto place_full = [&](const Vec3& p) {
+        if (g.reshape_ceiling <= 0) return false;
+        if (count_near(p) >= g.reshape_ceiling) return true;
+        // Its neighbours would hold one more: none may pass the ceiling (at the horizon the
+        // place's own neighbourhood is half empty, theirs behind it is not).
+        g.grid.query(
+            p, count_radius, [&](int i) { return g.out[i].p; }, around);
+        for (const int i : around)
+            if (count_near(g.out[i].p) >= g.reshape_ceiling) return true;
+        return false;
+    };
     auto reshape = [&](Candidate& c) {
-        if (c.source < 0 || place_taken(c.p, c.type)) return false;
+        if (c.source < 0 || place_taken(c.p, c.type) || place_full(c.p)) return false;
         const InputElements& in = g.input;
         const std::vector<int>& pool = in.pool[c.type];
         const int similar = in.sim_start[c.source + 1] - in.sim_start[c.source];

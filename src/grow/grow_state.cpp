@@ -58,6 +58,17 @@ grow::Metric resolve_metric(const Exemplar& exemplar, const GrowOptions& o) {
     return m;
 }
 
+// The median number of neighbours within r of the input elements a match may pick.
+int median_pool_count(const grow::InputElements& in) {
+    std::vector<int> counts;
+    for (const std::vector<int>& pool : in.pool)
+        for (const int i : pool) counts.push_back(in.within_r[i]);
+    if (counts.empty()) return 0;
+    const size_t k = static_cast<size_t>(0.85 * (counts.size() - 1));
+    std::nth_element(counts.begin(), counts.begin() + k, counts.end());
+    return counts[k] + 1;
+}
+
 }  // namespace
 
 Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
@@ -101,6 +112,7 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
     }
     relax_sweeps = options.relax_sweeps >= 0 ? options.relax_sweeps : (any_owned ? kSoftRelaxSweeps : 0);
     if (relax_sweeps > 0) relaxation.emplace(ex, metric.params);
+    if (bounds.has_samples) reshape_ceiling = median_pool_count(input);
     type_count.assign(types, 0);
     existing.dimension = exemplar.dimension;
     existing.types = exemplar.types;
