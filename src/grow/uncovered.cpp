@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/parallel.hpp"
+#include "det/layers.hpp"
 #include "det/vacancies.hpp"
 #include "tessera/det_session.hpp"
 
@@ -42,15 +43,39 @@ std::vector<Vec3> probe_points(const Domain& region, double step, int dimension)
     return points;
 }
 
-bool any_element_within(const Grower::Impl& g, const Vec3& p, double distance) {
+// How distances are measured: in 3D, or in the plane of a layered exemplar (a membrane, rods
+// on a floor: det/layers.hpp), whose thin axes a region thicker than the layer leaves empty
+// above and below by design (the fill put a second, offset membrane there). `depth`: the
+// region's largest extent along the thin axes, which a query must reach across.
+struct Reach {
+    bool thin[3] = {false, false, false};
+    double depth = 0.0;
+    double distance(Vec3 d) const {
+        for (int k = 0; k < 3; ++k)
+            if (thin[k]) d[k] = 0.0;
+        return norm(d);
+    }
+    template <class PositionOf, class Visit>
+    void for_each_within(const core::DynamicGrid& grid, const Vec3& p, double r, const PositionOf& position,
+                         const Visit& visit) const {
+        grid.for_each_within(
+            p, std::sqrt(r * r + depth * depth), position,
+            [&](int i) {
+                if (distance(position(i) - p) <= r) visit(i);
+            });
+    }
+};
+
+bool any_element_within(const Grower::Impl& g, const Reach& reach, const Vec3& p, double distance) {
     bool found = false;
-    g.grid.for_each_within(
-        p, distance, [&](int i) { return g.out[i].p; }, [&](int) { found = true; });
+    reach.for_each_within(
+        g.grid, p, distance, [&](int i) { return g.out[i].p; }, [&](int) { found = true; });
     return found;
 }
 
 // The probe points no element comes within `distance` of, in lattice order.
-std::vector<Vec3> unreached_points(const Grower::Impl& g, const Domain& region, double distance) {
+std::vector<Vec3> unreached_points(const Grower::Impl& g, const Reach& reach, const Domain& region,
+                                   double distance) {
     const std::vector<Vec3> probes = probe_points(region, kProbeStep * distance, g.metric.dimension);
     std::vector<char> empty(probes.size(), 0);
     core::parallel_for(
@@ -58,7 +83,7 @@ std::vector<Vec3> unreached_points(const Grower::Impl& g, const Domain& region, 
         [&](int begin, int end, int thread) {
             for (int k = begin; k < end; ++k) {
                 g.interrupt.check(thread);
-                empty[k] = !any_element_within(g, probes[k], distance);
+                empty[k] = !any_element_within(g, reach, probes[k], distance);
             }
         },
         256);
@@ -70,8 +95,8 @@ std::vector<Vec3> unreached_points(const Grower::Impl& g, const Domain& region, 
 
 // The part of the region to fill: within `distance` of an unreached point and at least
 // kEdge spacings from every element.
-Domain fill_domain(const Grower::Impl& g, const Domain& region, const std::vector<Vec3>& unreached,
-                   double distance) {
+Domain fill_domain(const Grower::Impl& g, const Reach& reach, const Domain& region,
+                   const std::vector<Vec3>& unreached, double distance) {
     core::DynamicGrid near(distance, g.metric.dimension);
     for (size_t k = 0; k < unreached.size(); ++k) near.insert(static_cast<int>(k), unreached[k]);
     const double edge = kEdge * g.metric.params.spacing;
@@ -84,9 +109,9 @@ Domain fill_domain(const Grower::Impl& g, const Domain& region, const std::vecto
         region,
         [&](const Vec3& p) {
             bool close = false;
-            near.for_each_within(
-                p, distance, [&](int k) { return unreached[k]; }, [&](int) { close = true; });
-            return close && !any_element_within(g, p, edge);
+            reach.for_each_within(
+                near, p, distance, [&](int k) { return unreached[k]; }, [&](int) { close = true; });
+            return close && !any_element_within(g, reach, p, edge);
         },
         cell, "uncovered");
 }
@@ -147,9 +172,19 @@ double uncovered_distance(const Grower::Impl& g) {
 int fill_uncovered(Grower::Impl& g, const Domain& region, const Arrangement& current) {
     if (g.out.empty()) return 0;
     const double distance = uncovered_distance(g);
-    const std::vector<Vec3> unreached = unreached_points(g, region, distance);
+    Reach reach;
+    const det::LayerAxes layer =
+        det::layer_axes(g.exemplar.domain.bounds(), g.metric.dimension, g.metric.params.radius);
+    if (layer.any) {
+        // A field turns the layer's normal from place to place: no one plane to measure in.
+        if (g.options.field.active()) return 0;
+        const Box b = region.bounds();
+        for (int k = 0; k < 3; ++k)
+            if (layer.thin[k]) reach.thin[k] = true, reach.depth = std::max(reach.depth, b.hi[k] - b.lo[k]);
+    }
+    const std::vector<Vec3> unreached = unreached_points(g, reach, region, distance);
     if (unreached.empty()) return 0;
-    const Domain fill = fill_domain(g, region, unreached, distance);
+    const Domain fill = fill_domain(g, reach, region, unreached, distance);
     DetSession session(g.exemplar, det_options(g));
     session.set_progress([&g](const ProgressEvent& e) {
         ProgressEvent f = e;

@@ -19,6 +19,9 @@ namespace tessera::grow {
 // Where a point counts as not reached: farther from every element's centre than this.
 // Twice the exemplar's largest hole (rim to rim, as det::exemplar_hole_radius) plus its
 // spacing: a hole a grown output may show at the quality bounds never reaches it.
+// For a layered exemplar (det/layers.hpp) the distance is measured in the layer's plane: a
+// region thicker than the layer is not filled above and below it (and with an orientation
+// field, which turns the layer, nothing is filled).
 double uncovered_distance(const Grower::Impl& g);
 
 // Fills the parts of `region` farther than uncovered_distance from every element (`current`:
