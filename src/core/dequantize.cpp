@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
+#include "core/crowding_repair.hpp"
 #include "core/rng.hpp"
 
 namespace tessera::core {
@@ -61,10 +61,10 @@ Exemplar dequantized(const Exemplar& exemplar, double spacing, std::uint64_t see
     Exemplar out = exemplar;
     const double q = coordinate_resolution(exemplar);
     if (!is_rounded(q, spacing)) return out;
-    const int n = static_cast<int>(out.elements.size()), types = static_cast<int>(out.types.size());
+    const int n = static_cast<int>(out.elements.size());
     // The closest distance of each type pair: no draw brings a pair closer (a viewer, and
     // every crowding bound, judges closeness by the recorded data).
-    std::vector<double> closest(static_cast<size_t>(types) * types, std::numeric_limits<double>::infinity());
+    const NearestDistanceTails closest(exemplar, CrowdingLevel::centroids);
     std::vector<Vec3> p(n);
     for (int i = 0; i < n; ++i) p[i] = out.elements[i].position;
     auto apart = [&](int j, const Vec3& at) {
@@ -72,13 +72,6 @@ Exemplar dequantized(const Exemplar& exemplar, double spacing, std::uint64_t see
         if (out.dimension == 2) d.z = 0.0;
         return norm(d);
     };
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j) {
-            const int a = out.elements[i].type, b = out.elements[j].type;
-            const double d = apart(j, p[i]);
-            closest[a * types + b] = std::min(closest[a * types + b], d);
-            closest[b * types + a] = closest[a * types + b];
-        }
     const KeyedRng rng(seed, Purpose::dequantize);
     for (int i = 0; i < n; ++i) {
         const int a = out.elements[i].type;
@@ -89,7 +82,7 @@ Exemplar dequantized(const Exemplar& exemplar, double spacing, std::uint64_t see
             const Vec3 at = p[i] + shift;
             bool fits = true;
             for (int j = 0; j < n && fits; ++j)
-                fits = j == i || apart(j, at) >= closest[a * types + out.elements[j].type];
+                fits = j == i || apart(j, at) >= closest.hard_core(a, out.elements[j].type);
             if (!fits) continue;
             Element& e = out.elements[i];
             e.position = e.position + shift;

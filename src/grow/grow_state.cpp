@@ -58,8 +58,9 @@ grow::Metric resolve_metric(const Exemplar& exemplar, const GrowOptions& o) {
     return m;
 }
 
-// The median number of neighbours within r of the input elements a match may pick.
-int median_pool_count(const grow::InputElements& in) {
+// One more than the 85% quantile of the number of neighbours within r of the input elements
+// a match may pick: the count of the exemplar's crowded places.
+int crowded_pool_count(const grow::InputElements& in) {
     std::vector<int> counts;
     for (const std::vector<int>& pool : in.pool)
         for (const int i : pool) counts.push_back(in.within_r[i]);
@@ -112,7 +113,7 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
     }
     relax_sweeps = options.relax_sweeps >= 0 ? options.relax_sweeps : (any_owned ? kSoftRelaxSweeps : 0);
     if (relax_sweeps > 0) relaxation.emplace(ex, metric.params);
-    if (bounds.has_samples) reshape_ceiling = median_pool_count(input);
+    if (bounds.has_samples) reshape_ceiling = crowded_pool_count(input);
     type_count.assign(types, 0);
     existing.dimension = exemplar.dimension;
     existing.types = exemplar.types;

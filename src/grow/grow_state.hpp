@@ -94,9 +94,10 @@ struct Grower::Impl {
     // from both filling one place.
     std::vector<char> owned;
     // Multi-sample exemplars: a candidate that touches others takes another input element's
-    // shape (generate.cpp, reshape) only where fewer elements than this lie within r, the
-    // median count of the exemplar's pool elements. Without it, rods in a 3D slab, which
-    // fit many orientations, filled the gaps the exemplar leaves and grew at 1.64x.
+    // shape (generate.cpp, reshape) only where fewer elements than this lie within r of the
+    // place and of each element near it: one more than the 85% quantile of the counts of the
+    // exemplar's pool elements. Without it, rods in a 3D slab, which fit many orientations,
+    // filled the gaps the exemplar leaves and grew at 1.64x.
     int reshape_ceiling = 0;
     // The count ceiling the overlap filter holds every element to (grow/crowd_ceiling.hpp);
     // add, move and drop_tail keep each element's `crowd` up to date while it is active.
