@@ -391,6 +391,25 @@ TEST(Grow, AMembraneKeepsItsLeafletsAndItsSmallMolecules) {
     expect_no_crowding(ex, out, "membrane");
 }
 
+// The channel proteins of the membrane (3 of its 177 elements, each spanning both leaflets)
+// are proposed where patches meet misaligned lipids: they must be moved out of the lipids'
+// samples to find a place. Without that the membrane grew 44% of their share; the paper's
+// bar for a rare class (within 20%) is not met yet (about 70%), this holds the gain.
+TEST(Grow, AMembraneKeepsMostOfItsChannelProteins) {
+    const Exemplar ex = example("membrane_3d");
+    const Box b = ex.domain.bounds();
+    const Domain region = Domain::box(b.lo, b.lo + Vec3{3 * b.size().x, 3 * b.size().y, b.size().z}, 3);
+    const Arrangement out = grown(ex, region);
+    const int channel = ex.find_type("channel");
+    auto share = [&](const std::vector<Element>& elements) {
+        const auto n = std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return e.type == channel; });
+        return static_cast<double>(n) / static_cast<double>(elements.size());
+    };
+    EXPECT_GT(share(out.elements), 0.6 * share(ex.elements)) << out.elements.size() << " elements";
+    for (const Sample& s : out.samples) EXPECT_TRUE(region.inside(s.p));
+    expect_no_crowding(ex, out, "membrane");
+}
+
 TEST(Grow, GrowByACountAndStepOutward) {
     const Exemplar ex = example("poisson_disk_2d");
     Grower g(ex);
