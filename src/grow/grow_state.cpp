@@ -58,6 +58,20 @@ grow::Metric resolve_metric(const Exemplar& exemplar, const GrowOptions& o) {
     return m;
 }
 
+// The axes along which a 3D box exemplar without a field is a layer (Impl::layer).
+std::array<bool, 3> layer_axes_of(const Exemplar& exemplar, const grow::Metric& m, const GrowOptions& o) {
+    std::array<bool, 3> layer{false, false, false};
+    if (m.dimension != 3 || o.field.active() || exemplar.domain.kind() != Domain::Kind::box) return layer;
+    const Box b = exemplar.domain.bounds();
+    int thin = 0;
+    for (int k = 0; k < 3; ++k) {
+        layer[k] = b.hi[k] - b.lo[k] <= 2.0 * (m.patch_radius + m.params.radius);
+        thin += layer[k];
+    }
+    if (thin > 1) layer = {false, false, false};  // a small block, not a layer
+    return layer;
+}
+
 // One more than the 85% quantile of the number of neighbours within r of the input elements
 // a match may pick: the count of the exemplar's crowded places.
 int crowded_pool_count(const grow::InputElements& in) {
@@ -114,6 +128,7 @@ Grower::Impl::Impl(const Exemplar& ex, const GrowOptions& o)
     relax_sweeps = options.relax_sweeps >= 0 ? options.relax_sweeps : (any_owned ? kSoftRelaxSweeps : 0);
     if (relax_sweeps > 0) relaxation.emplace(ex, metric.params);
     if (bounds.has_samples) reshape_ceiling = crowded_pool_count(input);
+    layer = layer_axes_of(exemplar, metric, options);
     type_count.assign(types, 0);
     existing.dimension = exemplar.dimension;
     existing.types = exemplar.types;

@@ -2,6 +2,8 @@
 // one record per element with the input element it copies, in a dynamic grid.
 #pragma once
 
+#include <array>
+
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -105,6 +107,23 @@ struct Grower::Impl {
     bool any_owned = false;
     bool owned_by_proposer(int candidate_type, int other_type) const {
         return owned[candidate_type * exemplar.types.size() + other_type] != 0;
+    }
+
+    // A 3D box exemplar no thicker than two growth reaches (patch + r) along an axis, and
+    // thicker along the other two, is a layer (a membrane, rods on a floor): its layers are
+    // linked only through the few elements that span them (a lipid's patch never reaches
+    // the other leaflet), and offsets copied element to element drift across it. Without a
+    // field, a seed copies its whole thickness (`layer`, grower.cpp), and every element
+    // growth places from then on lies at its input element's coordinate along those axes
+    // plus `layer_origin` (set by the first seed; `layer_registered`).
+    std::array<bool, 3> layer{false, false, false};
+    bool layer_registered = false;
+    Vec3 layer_origin;
+    // Along the registered layer axes, the place of input element `source`'s centroid.
+    void register_on_layer(int source, Vec3& p) const {
+        if (!layer_registered || source < 0) return;
+        for (int k = 0; k < 3; ++k)
+            if (layer[k]) p[k] = layer_origin[k] + input.centroid[source][k];
     }
 
     std::vector<grow::OutElement> out;

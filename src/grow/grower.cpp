@@ -1,6 +1,7 @@
 // tessera::Grower (include/tessera/grow.hpp): starting points, the grow calls and their
 // bounds, progress, and the arrangement a caller sees.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -124,16 +125,27 @@ double Grower::radius() const {
 
 namespace {
 
+// Distance from c to the exemplar's border, along the axes that are not a layer's.
+double seed_margin(const Grower::Impl& g, const Vec3& c) {
+    if (g.exemplar.domain.kind() != Domain::Kind::box) return g.exemplar.domain.distance_to_boundary(c);
+    const Box b = g.exemplar.domain.bounds();
+    double margin = 1e300;
+    for (int k = 0; k < g.metric.dimension; ++k)
+        if (!g.layer[k]) margin = std::min({margin, c[k] - b.lo[k], b.hi[k] - c[k]});
+    return margin;
+}
+
 // Adds a copy of an exemplar patch centred at `center` to the horizon: the seed element is
 // drawn among the elements whose whole patch lies in the exemplar (all elements when none
-// does), keyed by the seed and the world cell of the centre. With `spare_others`, an element
-// that would come closer to one already there than their hard core is left out.
+// does), keyed by the seed and the world cell of the centre. A layer's seed (Impl::layer)
+// copies its whole thickness, centred on `center` (or on the first seed's layer) and
+// registers the layer. With `spare_others`, an element that would come closer to one
+// already there than their hard core is left out.
 void add_seed_patch(Grower::Impl& g, const Vec3& center, bool spare_others) {
     const grow::InputElements& in = g.input;
     std::vector<int> interior;
     for (int i = 0; i < in.size(); ++i)
-        if (g.exemplar.domain.distance_to_boundary(in.centroid[i]) >= g.metric.patch_radius)
-            interior.push_back(i);
+        if (seed_margin(g, in.centroid[i]) >= g.metric.patch_radius) interior.push_back(i);
     if (interior.empty())
         for (int i = 0; i < in.size(); ++i) interior.push_back(i);
     const double cell = g.metric.params.spacing;
@@ -144,9 +156,15 @@ void add_seed_patch(Grower::Impl& g, const Vec3& center, bool spare_others) {
             static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(center.z / cell))));
     const int e = interior[rng.below(0, interior.size())];
     const Quat frame = g.frame_at(center);
+    const bool layered = g.layer[0] || g.layer[1] || g.layer[2];
+    if (layered && !g.layer_registered) {  // the layer, not the seed element, centred on `center`
+        g.layer_origin = center - g.exemplar.domain.bounds().center();
+        g.layer_registered = true;
+    }
     auto place = [&](int source, const Vec3& offset) {
         grow::OutElement o;
         o.p = center + frame.rotate(offset);
+        g.register_on_layer(source, o.p);
         if (g.metric.dimension == 2) o.p.z = 0.0;
         o.type = in.type[source];
         if (spare_others) {
@@ -163,7 +181,17 @@ void add_seed_patch(Grower::Impl& g, const Vec3& center, bool spare_others) {
         g.horizon.push_back(g.add(o));
     };
     place(e, Vec3{});
-    for (int k = 0; k < in.patch_count[e]; ++k) place(in.neighbors(e)[k].element, in.neighbors(e)[k].offset);
+    if (!layered) {
+        for (int k = 0; k < in.patch_count[e]; ++k) place(in.neighbors(e)[k].element, in.neighbors(e)[k].offset);
+        return;
+    }
+    const double patch2 = g.metric.patch_radius * g.metric.patch_radius;
+    for (int i = 0; i < in.size(); ++i) {
+        Vec3 in_plane = in.centroid[i] - in.centroid[e];
+        for (int k = 0; k < 3; ++k)
+            if (g.layer[k]) in_plane[k] = 0.0;
+        if (i != e && dot(in_plane, in_plane) <= patch2) place(i, in.centroid[i] - in.centroid[e]);
+    }
 }
 
 }  // namespace
@@ -209,6 +237,7 @@ void Grower::set_arrangement(const Arrangement& existing) {
     h.round_first.clear();
     h.retry.clear();
     h.has_bounds = false;
+    h.layer_registered = false;  // its layer's place is the arrangement's, not a seed's
     h.dirty = true;
     h.existing = existing;
     h.existing.types = h.exemplar.types;

@@ -126,9 +126,32 @@ DetOptions det_options(const Grower::Impl& g) {
     return o;
 }
 
-// Appends the session's unlocked elements (the fill) to the grower as kept elements: fixed
-// for later rounds, not locked for the caller. Returns how many.
-int adopt_unlocked(Grower::Impl& g, const Arrangement& filled) {
+// Depths along a registered layer (Impl::layer) further than this share of the spacing from
+// every depth the exemplar holds an element of the type at are off the layer.
+constexpr double kOffLayer = 0.25;
+
+// Whether an element of `type` centred at c lies where the registered layer holds its type:
+// the session fills the region as a volume, and put a lipid across the middle of a membrane.
+bool on_layer(const Grower::Impl& g, int type, const Vec3& c) {
+    if (!g.layer_registered) return true;
+    const double tolerance = kOffLayer * g.metric.params.spacing;
+    for (int k = 0; k < 3; ++k) {
+        if (!g.layer[k]) continue;
+        bool held = false;
+        for (int i = 0; i < g.input.size() && !held; ++i)
+            held = g.input.type[i] == type &&
+                   std::abs(c[k] - g.layer_origin[k] - g.input.centroid[i][k]) <= tolerance;
+        if (!held) return false;
+    }
+    return true;
+}
+
+// Appends the session's unlocked elements (the fill) that lie in the region as growth
+// counts it (every sample; the centre of an open region's) and on a registered layer to
+// the grower as kept elements: fixed for later rounds, not locked for the caller. The
+// session keeps centres in its domain, and a lipid at the region's side poked its tail
+// out. Returns how many.
+int adopt_unlocked(Grower::Impl& g, const Arrangement& filled, const Domain& region) {
     if (g.existing.types.empty()) {
         g.existing.dimension = g.exemplar.dimension;
         g.existing.types = g.exemplar.types;
@@ -139,6 +162,11 @@ int adopt_unlocked(Grower::Impl& g, const Arrangement& filled) {
         if (e.locked) continue;
         std::vector<Vec3> samples(e.sample_count);
         for (int s = 0; s < e.sample_count; ++s) samples[s] = filled.samples[e.first_sample + s].p;
+        const Vec3 centre = element_centroid(filled, e);
+        if (g.open_region ? !region.inside(centre)
+                          : !std::all_of(samples.begin(), samples.end(), [&](const Vec3& p) { return region.inside(p); }))
+            continue;
+        if (!on_layer(g, e.type, centre)) continue;
         const int index = g.existing.add_element(e.type, samples, e.radius);
         Element& kept = g.existing.elements[index];
         kept.position = e.position;
@@ -182,6 +210,11 @@ int fill_uncovered(Grower::Impl& g, const Domain& region, const Arrangement& cur
         for (int k = 0; k < 3; ++k)
             if (layer.thin[k]) reach.thin[k] = true, reach.depth = std::max(reach.depth, b.hi[k] - b.lo[k]);
     }
+    if (g.layer_registered) {  // growth's own layer (Impl::layer): a membrane, thicker than r
+        const Box b = region.bounds();
+        for (int k = 0; k < 3; ++k)
+            if (g.layer[k]) reach.thin[k] = true, reach.depth = std::max(reach.depth, b.hi[k] - b.lo[k]);
+    }
     const std::vector<Vec3> unreached = unreached_points(g, reach, region, distance);
     if (unreached.empty()) return 0;
     const Domain fill = fill_domain(g, reach, region, unreached, distance);
@@ -200,7 +233,7 @@ int fill_uncovered(Grower::Impl& g, const Domain& region, const Arrangement& cur
     session.set_domain(region);
     if (session.initialize(fill) == 0) return 0;
     session.iterate(fill, DetOptions{}.iterations);
-    return adopt_unlocked(g, session.arrangement());
+    return adopt_unlocked(g, session.arrangement(), region);
 }
 
 }  // namespace tessera::grow
