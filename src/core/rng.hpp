@@ -4,6 +4,7 @@
 // (an element, a tile) can be redone alone and draw the same numbers.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace tessera::core {
@@ -37,6 +38,14 @@ enum class Purpose : std::uint64_t {
     dequantize = 17,         // rounded exemplars: the draw within each coordinate's rounding cell
     test = 99
 };
+
+// The key of the cell holding (x, y, z) in a lattice of step `cell` anchored at the world
+// origin: draws keyed by it are the same at the same place however large the output is and
+// wherever its elements stand in memory.
+inline std::uint64_t lattice_key(double x, double y, double z, double cell) {
+    auto at = [cell](double v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / cell))); };
+    return mix64(mix64(mix64(at(x)) ^ at(y)) ^ at(z));
+}
 
 // A keyed stream: draw(i) is a pure function of (seed, purpose, a, b, i).
 class KeyedRng {

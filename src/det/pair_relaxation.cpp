@@ -16,6 +16,7 @@ constexpr int kBins = 50;             // r grid: 0 .. r_max
 constexpr double kReachSpacings = 5.0;  // r_max in mean spacings (as `tessera metrics`)
 constexpr int kProposals = 3;         // trial steps per element and sweep
 constexpr double kStepSpacings = 0.15;  // the largest trial step, in spacings
+constexpr double kKeyCellSpacings = 1.0 / 1024.0;  // the lattice keying the steps' draws
 constexpr double kKernelReach = 4.0;  // kernel evaluated within this many bandwidths
 
 constexpr double kPi = 3.14159265358979323846;
@@ -231,7 +232,9 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
         return e;
     };
     report.before = error();
-    const core::KeyedRng rng(seed, core::Purpose::jitter, 0x9a1c);
+    // The steps' draws are keyed by the lattice cell of the element's place (so fine that two
+    // elements never share one) and the sweep, not by its index.
+    const double key_cell = kKeyCellSpacings * spacing_;
 
     // The change of the sums if element i (type a) moved to q: its present pairs out, new in.
     const auto trial_delta = [&](Worker& w, const Vec3& q, int a) {
@@ -273,8 +276,10 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
         });
         double best_change = 0.0;
         Vec3 best;
+        const core::KeyedRng rng(seed, core::Purpose::jitter, core::lattice_key(p[i].x, p[i].y, p[i].z, key_cell),
+                                 static_cast<std::uint64_t>(sweep));
         for (int m = 0; m < kProposals; ++m) {
-            const std::uint64_t key = (static_cast<std::uint64_t>(sweep) * n + i) * kProposals + m;
+            const std::uint64_t key = static_cast<std::uint64_t>(m);
             Vec3 dir;
             if (dim == 2) {
                 const double angle = 2.0 * kPi * rng.uniform(3 * key);

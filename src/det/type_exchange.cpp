@@ -13,6 +13,9 @@ namespace tessera::det {
 
 namespace {
 
+// The lattice keying the choice of the input element copied into a place, in spacings.
+constexpr double kKeyCellSpacings = 1.0 / 1024.0;
+
 // A count is met within max(1, 1%).
 long slack_of(long target) { return std::max<long>(1, std::lround(0.01 * static_cast<double>(target))); }
 
@@ -113,7 +116,10 @@ int exchange_types(Provenance of, const Exemplar& exemplar, const Domain& domain
         if (!keeps) continue;
         --after[type];
         const Quat frame = params.field.frame(c, dim);
-        const int source = of_type[type][rng.below(static_cast<std::uint64_t>(-negative), of_type[type].size())];
+        // Keyed by the place (a lattice anchored at the world origin), not the candidate's
+        // index in this domain's lattice.
+        const std::uint64_t place = core::lattice_key(c.x, c.y, c.z, kKeyCellSpacings * params.spacing);
+        const int source = of_type[type][rng.below(place, of_type[type].size())];
         const Element& src = exemplar.elements[source];
         const int index = append_copy(of, exemplar, source, frame, c - frame.rotate(src.position), dim);
         removed.push_back(0);
