@@ -1,11 +1,15 @@
 """A range of a world built on Dask.distributed (tessera.world.build).
 
-Each tile is one task whose arguments are the futures of the tiles it depends on, submitted
-phase by phase: the scheduler starts a tile once its neighbours are done, wherever they were
-made, and the workers fetch the neighbours' compact tiles from each other. Tiles of one phase
-never depend on each other, so no phase waits for a gather. A tile's task key names the world
-(a hash of its fingerprint and options) and the tile, so a result is never mistaken for
-another world's, and a tile lost with a dying worker is made again, identical, elsewhere.
+The tiles of one phase within a block of tiles are one task (a group; one tile per task with
+blocks of 2 tiles along each axis), whose arguments are the futures of the groups its tiles
+depend on, submitted phase by phase: the scheduler starts a group once its neighbours are
+done, wherever they were made, and the workers fetch the neighbours' compact tiles from each
+other. Tiles of one phase never depend on each other, so no phase waits for a gather. A
+task costs the scheduler and the workers a few milliseconds whatever it holds (a third of a
+170-element tile's own time), which groups of several tiles share. A group's task key names
+the world (a hash of its fingerprint and options) and the group, so a result is never
+mistaken for another world's, and a group lost with a dying worker is made again, identical,
+elsewhere.
 
 This module imports distributed; tessera.world imports it only when a build runs.
 """
@@ -58,40 +62,91 @@ def _hold(world):
     return world
 
 
-def _make_tile(world, coord, *neighbours):
-    """One tile; `neighbours` are the finished tiles of its dependencies, in their order."""
+def _make_group(world, coords, *neighbour_groups):
+    """The tiles `coords` (of one phase) as {coord: tile}; `neighbour_groups` are the finished
+    groups ({coord: tile}) that hold their dependencies."""
     maker = _maker(world)
-    return maker.make(coord, list(zip(maker.dependencies(coord), neighbours)))
+    finished = {}
+    for group in neighbour_groups:
+        finished.update(group)
+    return {coord: maker.make(coord, [(d, finished[d]) for d in maker.dependencies(coord)]) for coord in coords}
 
 
 # ---- on the client ----------------------------------------------------------------------
 
-def _tile_key(world, coord):
-    return "tessera-tile-%s-%s" % (world["key"], "_".join(str(c) for c in coord))
+# Groups hold at most this many tiles when their size is chosen for the call.
+_MAX_AUTO_GROUP = 16
+# An automatic group size leaves at least this many tasks per worker in a phase.
+_TASKS_PER_WORKER = 4
 
 
-def submit(client, world, coords, dependencies, retries):
-    """Futures of every tile of `coords` (in phase order, each after its dependencies),
-    and the future of the recipe they share."""
-    held = client.submit(_hold, world, key="tessera-world-" + world["key"], retries=retries)
-    futures = {}
+def block_side(tiles_per_task, dimension, phase_tiles=0, workers=1):
+    """Tiles along each axis of a group's block (even: the phases alternate along each axis, so
+    a block of side b holds (b/2)^dimension tiles of each phase). `tiles_per_task`: the most
+    tiles a task may hold, or None: as many as leave _TASKS_PER_WORKER tasks per worker in the
+    largest phase (`phase_tiles` tiles), up to _MAX_AUTO_GROUP."""
+    side = 2
+    while True:
+        group = (side // 2 + 1) ** dimension  # of the next side, side + 2
+        if tiles_per_task is not None:
+            if group > tiles_per_task:
+                return side
+        elif group > _MAX_AUTO_GROUP or phase_tiles < _TASKS_PER_WORKER * workers * group:
+            return side
+        side += 2
+
+
+def groups(coords, phase, side):
+    """`coords` (in phase order) as (key, members) groups: the tiles of one phase within one
+    block of `side` tiles along each axis, in the order of their first tile."""
+    members = collections.OrderedDict()
     for coord in coords:
-        neighbours = [futures[d] for d in dependencies(coord)]
-        futures[coord] = client.submit(_make_tile, held, coord, *neighbours, key=_tile_key(world, coord),
-                                       retries=retries)
-    return futures, held
+        members.setdefault((phase(coord),) + tuple(c // side for c in coord), []).append(coord)
+    return list(members.items())
 
 
-def collect(client, futures, wanted, report):
-    """The tiles `wanted` once every future is done; report(done, total) is called after each
-    tile (a tile made again after a worker died is not counted twice) and may raise."""
-    finished = set()
-    for future in distributed.as_completed(list(futures.values()), loop=client.loop):
+def _group_key(world, key):
+    return "tessera-tiles-%s-%s" % (world["key"], "_".join(str(c) for c in key))
+
+
+def submit(client, world, coords, dependencies, phase, side, retries):
+    """Futures of every group of `coords` (in phase order, each after its dependencies) with
+    their tiles, as [(future, members)], and the future of the recipe they share."""
+    held = client.submit(_hold, world, key="tessera-world-" + world["key"], retries=retries)
+    submitted, group_of = [], {}
+    for key, members in groups(coords, phase, side):
+        needed = sorted({group_of[d] for coord in members for d in dependencies(coord)})
+        future = client.submit(_make_group, held, members, *[submitted[g][0] for g in needed],
+                               key=_group_key(world, key), retries=retries)
+        for coord in members:
+            group_of[coord] = len(submitted)
+        submitted.append((future, members))
+    return submitted, held
+
+
+def collect(client, submitted, wanted, report):
+    """The tiles `wanted` once every group is done; report(done, total) is called with the
+    tiles finished after each group (a group made again after a worker died is not counted
+    twice) and may raise."""
+    tiles_of = {future.key: len(members) for future, members in submitted}
+    total = sum(tiles_of.values())
+    finished, done = set(), 0
+    for future in distributed.as_completed([f for f, _ in submitted], loop=client.loop):
         if future.status == "error":
             future.result()  # raises the tile's error, as the library raised it on the worker
-        finished.add(future.key)
-        report(len(finished), len(futures))
-    return dict(zip(wanted, client.gather([futures[c] for c in wanted])))
+        if future.key not in finished:
+            finished.add(future.key)
+            done += tiles_of[future.key]
+        report(done, total)
+    holding = {}
+    for future, members in submitted:
+        for coord in members:
+            holding[coord] = future
+    needed = list(collections.OrderedDict.fromkeys(holding[c] for c in wanted))
+    made = {}
+    for group in client.gather(needed):
+        made.update(group)
+    return {coord: made[coord] for coord in wanted}
 
 
 @contextlib.contextmanager

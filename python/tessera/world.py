@@ -19,6 +19,7 @@ are boxes with exclusive ends, as in range() and in ``tessera world --tiles X0:X
 ((0, 4), (0, 3)) or "0:4,0:3" holds the tiles 0 <= x < 4, 0 <= y < 3.
 """
 
+import collections
 import os
 import time
 
@@ -195,9 +196,9 @@ def build_local(exemplar, tiles, tile_size, *, method="grow", progress=None, **o
 
 
 def build(exemplar, tiles, tile_size, client=None, *, method="grow", timeout=30, n_workers=2, retries=2, progress=None,
-          **options):
-    """The tiles `tiles` of a world, made on Dask.distributed, one task per tile; returns a
-    WorldTiles whose tiles are byte-identical to build_local's and to World's.
+          tiles_per_task=None, **options):
+    """The tiles `tiles` of a world, made on Dask.distributed, a task per group of tiles of one
+    phase; returns a WorldTiles whose tiles are byte-identical to build_local's and to World's.
 
     tiles      a box of tiles with exclusive ends, ((x0, x1), (y0, y1)[, (z0, z1)]) or its text
                "X0:X1,Y0:Y1[,Z0:Z1]", or a list of boxes that do not overlap. The neighbours of
@@ -217,6 +218,11 @@ def build(exemplar, tiles, tile_size, client=None, *, method="grow", timeout=30,
     progress   optional callable, called as tiles finish with a dict (stage "tile", iteration,
                iterations, energy, elapsed, fraction); returning False cancels the tiles under
                way and raises Cancelled.
+    tiles_per_task
+               the most tiles one task makes (tiles of one phase in a block of tiles, made one
+               after the other on one worker): None (default) chooses as many as leave four
+               tasks per worker thread in each phase, up to 16; 1 makes a task of each tile.
+               A task costs a few milliseconds of scheduling whatever it holds. No tile changes.
     options    the growth's keywords as for TileMaker; threads (each tile's growth) defaults to 1
                here, since the workers run tiles side by side.
 
@@ -232,25 +238,31 @@ def build(exemplar, tiles, tile_size, client=None, *, method="grow", timeout=30,
         raise OptionError("retries must be an integer >= 0, got %r" % (retries,))
     if not (isinstance(timeout, (int, float)) and not isinstance(timeout, bool) and timeout > 0):
         raise OptionError("timeout must be a number of seconds > 0, got %r" % (timeout,))
+    if not (tiles_per_task is None or (isinstance(tiles_per_task, int) and not isinstance(tiles_per_task, bool)
+                                       and tiles_per_task >= 1)):
+        raise OptionError("tiles_per_task must be None or an integer >= 1, got %r" % (tiles_per_task,))
     if options.get("threads") is None:
         options["threads"] = 1
     maker = TileMaker(exemplar, tile_size, **options)  # checks every option here, before the cluster
     from . import _world_dask  # imports distributed, which tessera needs for this call only
     world = _world_dask.recipe(text, maker.tile_size, options, maker.fingerprint)
     order = closure(wanted, exemplar.dimension)
+    largest_phase = max(collections.Counter(maker.phase(c) for c in order).values())
     with _world_dask.connected(client, timeout, n_workers, ClusterUnavailable) as dask:
-        futures, held = _world_dask.submit(dask, world, order, maker.dependencies, retries)
+        workers = sum(dask.nthreads().values())
+        side = _world_dask.block_side(tiles_per_task, exemplar.dimension, largest_phase, workers)
+        submitted, held = _world_dask.submit(dask, world, order, maker.dependencies, maker.phase, side, retries)
         try:
-            made = _world_dask.collect(dask, futures, wanted, report)
+            made = _world_dask.collect(dask, submitted, wanted, report)
         except BaseException:
-            dask.cancel(list(futures.values()) + [held])
+            dask.cancel([future for future, _ in submitted] + [held])
             raise
     return WorldTiles(made, len(order), exemplar.dimension, maker.tile_size)
 
 
 _options.with_signature(build_local, ("exemplar", "tiles", "tile_size"), _METHODS, ("method", "progress"))
 _options.with_signature(build, ("exemplar", "tiles", "tile_size", "client"), _METHODS,
-                        ("method", "timeout", "n_workers", "retries", "progress"))
+                        ("method", "timeout", "n_workers", "retries", "progress", "tiles_per_task"))
 
 
 def _method_options(name, method, options):

@@ -169,12 +169,33 @@ def test_a_3d_world_streams_the_tiles_a_build_makes():
 
 # ---- on Dask ------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("workers", [1, 2])
-def test_dask_build_equals_the_local_build(local, workers):
-    built = world.build(TWO_CLASS, RANGE, SIZE, n_workers=workers, seed=SEED)
+@pytest.mark.parametrize("workers, per_task", [(1, None), (2, None), (2, 4), (1, 9)])
+def test_dask_build_equals_the_local_build(local, workers, per_task):
+    built = world.build(TWO_CLASS, RANGE, SIZE, n_workers=workers, seed=SEED, tiles_per_task=per_task)
     assert built.hashes == local.hashes
     assert built.made == local.made
     assert world.tile_json(built.merged()) == world.tile_json(local.merged())
+
+
+def test_tasks_group_the_tiles_of_one_phase_in_blocks():
+    from tessera import _world_dask
+    # Blocks of b tiles along each axis hold (b / 2)^dimension tiles of each phase.
+    assert [_world_dask.block_side(n, 2) for n in (1, 3, 4, 8, 9, 16)] == [2, 2, 4, 4, 6, 8]
+    assert [_world_dask.block_side(n, 3) for n in (1, 7, 8, 27)] == [2, 2, 4, 6]
+    # Automatic: four tasks per worker thread in the largest phase, at most 16 tiles a task.
+    assert _world_dask.block_side(None, 2, phase_tiles=20, workers=2) == 2
+    assert _world_dask.block_side(None, 2, phase_tiles=32, workers=2) == 4
+    assert _world_dask.block_side(None, 2, phase_tiles=10 ** 6, workers=200) == 8
+    assert _world_dask.block_side(None, 3, phase_tiles=10 ** 6, workers=2) == 4
+    maker = world.TileMaker(TWO_CLASS, SIZE, seed=SEED)
+    order = world.closure([(x, y) for x in range(4) for y in range(4)], 2)
+    grouped = _world_dask.groups(order, maker.phase, 4)
+    assert sorted(c for _, members in grouped for c in members) == sorted(order)
+    for key, members in grouped:
+        assert {maker.phase(c) for c in members} == {key[0]} and len(members) <= 4
+        assert {tuple(v // 4 for v in c) for c in members} == {key[1:]}
+    phases = [key[0] for key, _ in grouped]
+    assert phases == sorted(phases)  # each group after the groups it depends on
 
 
 @pytest.mark.skipif("TESSERA_CLI" not in os.environ, reason="TESSERA_CLI is set by CTest")
@@ -185,7 +206,8 @@ def test_the_cli_writes_the_same_tiles(tmp_path, local):
     assert {tuple(t["tile"]): t["hash"] for t in index["tiles"]} == local.hashes
 
 
-def test_a_worker_killed_mid_build_changes_no_tile():
+@pytest.mark.parametrize("per_task", [None, 4])
+def test_a_worker_killed_mid_build_changes_no_tile(per_task):
     distributed = pytest.importorskip("distributed")
     import logging
     wide = ((0, 4), (0, 4))
@@ -196,13 +218,14 @@ def test_a_worker_killed_mid_build_changes_no_tile():
         killed = []
 
         def kill_the_busiest_worker(event):
-            if event["iteration"] == 4 and not killed:
+            if event["iteration"] >= 4 and not killed:
                 busy = {address: keys for address, keys in client.processing().items() if keys}
                 victim = max(busy, key=lambda address: len(busy[address]))
                 killed.append((victim, len(busy[victim])))
                 os.kill(pids[victim], signal.SIGKILL)
 
-        built = world.build(TWO_CLASS, wide, 12.0, client=client, seed=5, progress=kill_the_busiest_worker)
+        built = world.build(TWO_CLASS, wide, 12.0, client=client, seed=5, progress=kill_the_busiest_worker,
+                            tiles_per_task=per_task)
         assert killed and killed[0][1] > 0  # it died with tiles under way
         assert killed[0][0] not in client.scheduler_info()["workers"]
         assert client.status == "running"  # a client given is left open
@@ -256,6 +279,8 @@ def test_bad_sizes_and_arguments_name_the_parameter():
         world.build_local(TWO_CLASS, RANGE, "ten")
     with pytest.raises(tessera.OptionError, match="retries must be an integer >= 0"):
         world.build(TWO_CLASS, RANGE, SIZE, client=unreachable, retries=-1)
+    with pytest.raises(tessera.OptionError, match="tiles_per_task must be None or an integer >= 1"):
+        world.build(TWO_CLASS, RANGE, SIZE, client=unreachable, tiles_per_task=0)
     with pytest.raises(tessera.OptionError, match="timeout must be a number of seconds > 0"):
         world.build(TWO_CLASS, RANGE, SIZE, client=unreachable, timeout=0)
     with pytest.raises(tessera.OptionError, match="client must be None, a distributed.Client"):
