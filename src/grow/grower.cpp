@@ -323,6 +323,11 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         report.added += uncovered;
     }
     grow::relax_pair_correlation(g, region, static_cast<int>(start), report);
+    if (report.covered && !g.open_region) {  // a world's tile is open toward later tiles
+        const int filled = grow::fill_covered_holes(g, static_cast<int>(start), static_cast<int>(g.out.size()), region);
+        report.filled += filled;
+        report.added += filled;
+    }
     report.seconds = std::chrono::duration<double>(Clock::now() - g.t0).count();
     report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
     g.last_report = report;

@@ -46,6 +46,13 @@ constexpr double kSqueeze = 0.8;
 // of the small ones).
 constexpr double kOverShareDepth = 1.1;
 
+// In a covered region only holes this many times deeper than the exemplar's largest are
+// filled: a region many times the exemplar's size has larger holes of its own (the largest
+// of a random pattern grows with the area), and filling every hole over the exemplar's
+// made clustered and random patterns regular (the redwood seedlings' pair correlation error
+// 0.14 -> 0.17, the cells' 0.065 -> 0.084).
+constexpr double kCoveredDepth = 1.2;
+
 // Rounds of search and insertion per call: the later ones probe around the elements just
 // inserted, for the rest of a hole larger than one element.
 constexpr int kPasses = 3;
@@ -60,17 +67,26 @@ struct Hole {
 // element, each centred and tested for enclosure.
 class HoleFinder {
 public:
-    HoleFinder(const Grower::Impl& g, const Domain* region)
+    HoleFinder(const Grower::Impl& g, const Domain* region, bool enclosed_only = true)
         : g_(g),
           region_(region),
+          enclosed_only_(enclosed_only),
           dirs_(probe_directions(g.metric.dimension)),
           spacing_(g.metric.params.spacing),
-          hole_(g.hole_radius) {
+          hole_(enclosed_only ? g.hole_radius : kCoveredDepth * g.hole_radius) {
         for (const Element& e : g.exemplar.elements) max_rim_ = std::max(max_rim_, e.radius);
     }
 
     double hole() const { return hole_; }
-    double cap() const { return 3.0 * spacing_; }
+    // How deep the search looks: while growth goes on, a place emptier than 3 spacings is the
+    // open frontier, not a hole. In a covered region there is no frontier, and the search
+    // reaches the depth from which the fill of what growth did not reach takes over
+    // (uncovered_distance: twice the exemplar's hole and a spacing): a random pattern's holes
+    // run past 3 spacings (the Japanese pines' largest is 2.7 of their mean nearest
+    // distance), and one 1.4x the exemplar's was taken for the frontier and left.
+    double cap() const {
+        return enclosed_only_ ? 3.0 * spacing_ : std::max(3.0 * spacing_, 2.0 * hole_ + 2.0 * spacing_);
+    }
 
     // Buffers of one worker.
     struct Buffers {
@@ -117,8 +133,9 @@ private:
         return false;
     }
 
-    // Pattern search from c to the deepest point nearby; true when that hole is deeper than
-    // the exemplar's, inside the region and enclosed in every direction.
+    // Pattern search from c to the deepest point nearby in the region; true when that hole is
+    // deeper than the exemplar's and enclosed in every direction (by elements or the region's
+    // outside).
     bool centred_hole(Vec3 c, Buffers& b, Hole& out) const {
         if (g_.metric.dimension == 2) c.z = 0.0;
         double depth = clearance(c, cap());
@@ -129,25 +146,31 @@ private:
                 for (int k = 0; k < 2 * g_.metric.dimension; ++k) {
                     Vec3 q = c;
                     q[k / 2] += (k % 2 ? -h : h);
+                    // In a covered region the search stays in it: a hole against its edge
+                    // opens toward the outside, where no element is, and would be followed out.
+                    // (While growth goes on, such places are the region's own frontier.)
+                    if (!enclosed_only_ && region_ && !region_->inside(q)) continue;
                     const double dq = clearance(q, cap());
                     if (dq > depth) c = q, depth = dq, moved = true;
                 }
             }
         }
         if (!(depth > hole_) || !(depth < cap()) || (region_ && !region_->inside(c))) return false;
+        out.c = c;
+        out.depth = depth;
+        if (!enclosed_only_) return true;
         const double reach = depth + kEnclosureReach * spacing_;
         g_.grid.query(
             c, reach, [&](int j) { return g_.out[j].p; }, b.probe);
         for (const Vec3& d : dirs_)
             if (!covered(c, d, reach, b.probe) && !(region_ && !region_->inside(c + d * (depth + spacing_))))
                 return false;
-        out.c = c;
-        out.depth = depth;
         return true;
     }
 
     const Grower::Impl& g_;
     const Domain* region_;
+    bool enclosed_only_ = true;
     std::vector<Vec3> dirs_;
     double spacing_ = 1.0, hole_ = 0.0, max_rim_ = 0.0;
 };
@@ -253,9 +276,11 @@ std::vector<Hole> find_holes(const Grower::Impl& g, const HoleFinder& finder,
 
 }  // namespace
 
-int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region) {
+namespace {
+
+int fill_holes(Grower::Impl& g, int first, int end, const Domain* region, bool enclosed_only) {
     if (!g.fills_holes || first >= end) return 0;
-    const HoleFinder finder(g, region);
+    const HoleFinder finder(g, region, enclosed_only);
     HoleFiller filler(g, finder);
     std::vector<int> around;
     for (int i = first; i < end; ++i) around.push_back(i);
@@ -267,6 +292,16 @@ int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* regio
     const int added = static_cast<int>(filler.inserted().size());
     if (added > 0) repair_round(g, filler.movable(), region);
     return added;
+}
+
+}  // namespace
+
+int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region) {
+    return fill_holes(g, first, end, region, true);
+}
+
+int fill_covered_holes(Grower::Impl& g, int first, int end, const Domain& region) {
+    return fill_holes(g, first, end, &region, false);
 }
 
 }  // namespace tessera::grow
