@@ -1,7 +1,6 @@
 // tessera::Grower (include/tessera/grow.hpp): starting points, the grow calls and their
 // bounds, progress, and the arrangement a caller sees.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
