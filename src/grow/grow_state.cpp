@@ -72,6 +72,11 @@ std::array<bool, 3> layer_axes_of(const Exemplar& exemplar, const grow::Metric& 
     return layer;
 }
 
+// An existing arrangement's layer is found from this many of its elements, at depths within
+// this share of the spacing of the exemplar's (Impl::register_layer_of_elements).
+constexpr int kLayerSample = 256;
+constexpr double kLayerTolerance = 0.25;
+
 // One more than the 85% quantile of the number of neighbours within r of the input elements
 // a match may pick: the count of the exemplar's crowded places.
 int crowded_pool_count(const grow::InputElements& in) {
@@ -186,6 +191,41 @@ void Grower::Impl::drop_tail(int first, const std::vector<char>& keep) {
     out.resize(w);
     for (int i = first; i < w; ++i) grid.insert(i, out[i].p);
     dirty = true;
+}
+
+void Grower::Impl::register_layer_of_elements() {
+    layer_registered = false;
+    int axis = -1;
+    for (int k = 0; k < 3; ++k)
+        if (layer[k]) axis = k;
+    if (axis < 0 || out.empty()) return;
+    const int n = std::min<int>(static_cast<int>(out.size()), kLayerSample);
+    const double tolerance = kLayerTolerance * metric.params.spacing;
+    // Every (element, exemplar element of its type) pair proposes the offset between their
+    // depths; the true one is proposed by every element, a wrong one by some.
+    std::vector<double> offsets;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < input.size(); ++j)
+            if (input.type[j] == out[i].type) offsets.push_back(out[i].p[axis] - input.centroid[j][axis]);
+    if (offsets.empty()) return;
+    std::sort(offsets.begin(), offsets.end());
+    size_t best = 0, best_count = 0;
+    for (size_t a = 0, b = 0; a < offsets.size(); ++a) {
+        while (b < offsets.size() && offsets[b] - offsets[a] <= tolerance) ++b;
+        if (b - a > best_count) best = a, best_count = b - a;
+    }
+    const double offset = offsets[best + best_count / 2];
+    int held = 0;
+    for (int i = 0; i < n; ++i) {
+        bool at = false;
+        for (int j = 0; j < input.size() && !at; ++j)
+            at = input.type[j] == out[i].type && std::abs(out[i].p[axis] - offset - input.centroid[j][axis]) <= tolerance;
+        held += at;
+    }
+    if (2 * held < n) return;
+    layer_origin = Vec3{};
+    layer_origin[axis] = offset;
+    layer_registered = true;
 }
 
 int Grower::Impl::count_crowd(const Vec3& p, int self, int change) {

@@ -119,6 +119,10 @@ struct Grower::Impl {
     std::array<bool, 3> layer{false, false, false};
     bool layer_registered = false;
     Vec3 layer_origin;
+    // Registers the layer on the elements already there (an existing arrangement): the depth
+    // offset most of them share with exemplar elements of their type, when at least half
+    // of them lie at it; else the layer stays unregistered.
+    void register_layer_of_elements();
     // Along the registered layer axes, the place of input element `source`'s centroid.
     void register_on_layer(int source, Vec3& p) const {
         if (!layer_registered || source < 0) return;

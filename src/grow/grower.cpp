@@ -236,7 +236,6 @@ void Grower::set_arrangement(const Arrangement& existing) {
     h.round_first.clear();
     h.retry.clear();
     h.has_bounds = false;
-    h.layer_registered = false;  // its layer's place is the arrangement's, not a seed's
     h.dirty = true;
     h.existing = existing;
     h.existing.types = h.exemplar.types;
@@ -256,6 +255,7 @@ void Grower::set_arrangement(const Arrangement& existing) {
     }
     h.next_id = existing.elements.empty() ? 0 : max_id + 1;
     h.round_first.clear();
+    h.register_layer_of_elements();  // its layer's place is the arrangement's, not a seed's
     extend(h.grown, h.has_bounds, existing.domain.bounds());
 }
 
