@@ -21,9 +21,6 @@ constexpr int kNudgeSteps = 6;
 // Shapes of the type's pool a multi-sample candidate that touches others tries, after its
 // similarity set (drop_overlapping's reshape), spread over the pool.
 constexpr int kReshapeTries = 32;
-// A reshape on a registered layer (Impl::layer) takes only shapes whose depth lies within
-// this share of the spacing of the candidate's.
-constexpr double kOffLayer = 0.25;
 
 // The input entries of `e`'s patch paired with an output element within c (position only:
 // a pair of different types still occupies the place).
@@ -341,9 +338,7 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
             if (by_samples) g.sample_positions(-1, at.source, at.frame, at.p, moved);
             Vec3 push = push_out(at, moved);
             if (g.metric.dimension == 2) push.z = 0.0;
-            if (g.layer_registered)  // it stays on its layer
-                for (int k = 0; k < 3; ++k)
-                    if (g.layer[k]) push[k] = 0.0;
+            g.keep_on_layer(Vec3{}, push);  // it stays on its layer
             // A multi-sample element moves across its chord only: along it its samples slide
             // past their neighbours' and it leaves the layer it spans (a channel through a
             // membrane shifted up, and the lipids copied round it stacked above the membrane).
@@ -420,7 +415,7 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
             // lipid of the other leaflet) does not belong at this place.
             Vec3 p = c.p;
             g.register_on_layer(alt, p);
-            if (norm(p - c.p) > kOffLayer * g.metric.params.spacing) continue;
+            if (norm(p - c.p) > Grower::Impl::kLayerTolerance * g.metric.params.spacing) continue;
             g.sample_positions(-1, alt, c.frame, p, trial);
             if (region && !g.fits_region(*region, -1, alt, c.frame, p, theirs)) continue;
             if (crowds(p, c.type, trial, blocking) || !blocking.empty()) continue;

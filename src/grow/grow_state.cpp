@@ -72,10 +72,9 @@ std::array<bool, 3> layer_axes_of(const Exemplar& exemplar, const grow::Metric& 
     return layer;
 }
 
-// An existing arrangement's layer is found from this many of its elements, at depths within
-// this share of the spacing of the exemplar's (Impl::register_layer_of_elements).
+// An existing arrangement's layer is found from this many of its elements
+// (Impl::register_layer_of_elements).
 constexpr int kLayerSample = 256;
-constexpr double kLayerTolerance = 0.25;
 
 // One more than the 85% quantile of the number of neighbours within r of the input elements
 // a match may pick: the count of the exemplar's crowded places.
@@ -214,18 +213,25 @@ void Grower::Impl::register_layer_of_elements() {
         while (b < offsets.size() && offsets[b] - offsets[a] <= tolerance) ++b;
         if (b - a > best_count) best = a, best_count = b - a;
     }
-    const double offset = offsets[best + best_count / 2];
-    int held = 0;
-    for (int i = 0; i < n; ++i) {
-        bool at = false;
-        for (int j = 0; j < input.size() && !at; ++j)
-            at = input.type[j] == out[i].type && std::abs(out[i].p[axis] - offset - input.centroid[j][axis]) <= tolerance;
-        held += at;
-    }
-    if (2 * held < n) return;
     layer_origin = Vec3{};
-    layer_origin[axis] = offset;
+    layer_origin[axis] = offsets[best + best_count / 2];
     layer_registered = true;
+    int held = 0;
+    for (int i = 0; i < n; ++i) held += on_layer(out[i].type, out[i].p);
+    layer_registered = 2 * held >= n;
+}
+
+bool Grower::Impl::on_layer(int type, const Vec3& p) const {
+    if (!layer_registered) return true;
+    const double tolerance = kLayerTolerance * metric.params.spacing;
+    for (int k = 0; k < 3; ++k) {
+        if (!layer[k]) continue;
+        bool held = false;
+        for (int i = 0; i < input.size() && !held; ++i)
+            held = input.type[i] == type && std::abs(p[k] - layer_origin[k] - input.centroid[i][k]) <= tolerance;
+        if (!held) return false;
+    }
+    return true;
 }
 
 int Grower::Impl::count_crowd(const Vec3& p, int self, int change) {

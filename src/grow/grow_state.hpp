@@ -117,6 +117,10 @@ struct Grower::Impl {
     // growth places from then on lies at its input element's coordinate along those axes
     // plus `layer_origin` (set by the first seed; `layer_registered`).
     std::array<bool, 3> layer{false, false, false};
+    // Depths further than this share of the spacing from every depth the exemplar holds an
+    // element's type at are off the layer (the fill's elements, a reshape's shapes, an
+    // existing arrangement's elements).
+    static constexpr double kLayerTolerance = 0.25;
     bool layer_registered = false;
     Vec3 layer_origin;
     // Registers the layer on the elements already there (an existing arrangement): the depth
@@ -129,6 +133,17 @@ struct Grower::Impl {
         for (int k = 0; k < 3; ++k)
             if (layer[k]) p[k] = layer_origin[k] + input.centroid[source][k];
     }
+    // A move from `from` to `to` kept on the registered layer: `to`'s layer-axis coordinates
+    // put back to `from`'s (the solve, the repair and the nudge move elements within it).
+    void keep_on_layer(const Vec3& from, Vec3& to) const {
+        if (!layer_registered) return;
+        for (int k = 0; k < 3; ++k)
+            if (layer[k]) to[k] = from[k];
+    }
+    // Whether an element of `type` centred at p lies within kLayerTolerance spacings of a
+    // depth the exemplar holds an element of the type at (always, when no layer is
+    // registered).
+    bool on_layer(int type, const Vec3& p) const;
 
     std::vector<grow::OutElement> out;
     // Elements of each type in `out`, kept by add, drop_tail, set_type and clear (the type

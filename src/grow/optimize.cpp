@@ -157,8 +157,8 @@ void solve(Grower::Impl& g, const Unknowns& u, const std::vector<std::vector<Pre
     for (int c = 0; c < n; ++c) {
         const int v = u.element[c];
         Vec3 p = g.out[v].p;
-        for (int k = 0; k < dims; ++k)
-            if (!(g.layer_registered && g.layer[k])) p[k] = x(c, k);  // a layer's elements stay on it
+        for (int k = 0; k < dims; ++k) p[k] = x(c, k);
+        g.keep_on_layer(g.out[v].p, p);
         if (!is_finite(p)) continue;
         if (region && !g.fits_region(*region, g.out[v].kept, g.out[v].source, g.out[v].frame, p, samples))
             continue;

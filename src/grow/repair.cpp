@@ -63,9 +63,7 @@ int repair_part(Grower::Impl& g, const std::vector<int>& movable, const Domain* 
         Vec3 c;
         for (int s = 0; s < e.sample_count; ++s) c = c + part.samples[e.first_sample + s].p;
         c = c * (1.0 / e.sample_count);
-        if (g.layer_registered)  // a layer's elements stay on it (Impl::layer)
-            for (int a = 0; a < 3; ++a)
-                if (g.layer[a]) c[a] = g.out[movable[k]].p[a];
+        g.keep_on_layer(g.out[movable[k]].p, c);
         if (region && g.open_region && !region->inside(c)) continue;
         g.move(movable[k], c);
     }

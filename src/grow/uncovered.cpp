@@ -126,26 +126,6 @@ DetOptions det_options(const Grower::Impl& g) {
     return o;
 }
 
-// Depths along a registered layer (Impl::layer) further than this share of the spacing from
-// every depth the exemplar holds an element of the type at are off the layer.
-constexpr double kOffLayer = 0.25;
-
-// Whether an element of `type` centred at c lies where the registered layer holds its type:
-// the session fills the region as a volume, and put a lipid across the middle of a membrane.
-bool on_layer(const Grower::Impl& g, int type, const Vec3& c) {
-    if (!g.layer_registered) return true;
-    const double tolerance = kOffLayer * g.metric.params.spacing;
-    for (int k = 0; k < 3; ++k) {
-        if (!g.layer[k]) continue;
-        bool held = false;
-        for (int i = 0; i < g.input.size() && !held; ++i)
-            held = g.input.type[i] == type &&
-                   std::abs(c[k] - g.layer_origin[k] - g.input.centroid[i][k]) <= tolerance;
-        if (!held) return false;
-    }
-    return true;
-}
-
 // Appends the session's unlocked elements (the fill) that lie in the region as growth
 // counts it (every sample; the centre of an open region's) and on a registered layer to
 // the grower as kept elements: fixed for later rounds, not locked for the caller. The
@@ -166,7 +146,7 @@ int adopt_unlocked(Grower::Impl& g, const Arrangement& filled, const Domain& reg
         if (g.open_region ? !region.inside(centre)
                           : !std::all_of(samples.begin(), samples.end(), [&](const Vec3& p) { return region.inside(p); }))
             continue;
-        if (!on_layer(g, e.type, centre)) continue;
+        if (!g.on_layer(e.type, centre)) continue;  // the session fills the region as a volume
         const int index = g.existing.add_element(e.type, samples, e.radius);
         Element& kept = g.existing.elements[index];
         kept.position = e.position;
