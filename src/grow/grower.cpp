@@ -322,9 +322,8 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         report.added += uncovered;
     }
     grow::relax_pair_correlation(g, region, static_cast<int>(start), report);
-    // Not in a world's tile: its faces toward later tiles are open, and a hole against one
-    // is the next tile's to fill (filled here, a 3D world of spheres crowded its seams).
-    if (report.covered && !g.open_region) {
+    // In a world's tile only holes closed toward its faces (grow/vacancies.hpp).
+    if (report.covered) {
         const int filled = grow::fill_covered_holes(g, static_cast<int>(start), static_cast<int>(g.out.size()), region);
         report.filled += filled;
         report.added += filled;

@@ -175,13 +175,20 @@ private:
         if (!(depth > hole_) || !(depth < cap()) || (region_ && !region_->inside(c))) return false;
         out.c = c;
         out.depth = depth;
-        if (!enclosed_only_) return true;
+        // A covered region's hole need not be enclosed, unless the region is a world's
+        // tile: there a hole open toward a face the next tiles have not grown yet is theirs
+        // to fill (filled here, a 3D world of spheres crowded its seams).
+        if (!enclosed_only_ && !(region_ && g_.open_region)) return true;
         const double reach = depth + kEnclosureReach * spacing_;
         g_.grid.query(
             c, reach, [&](int j) { return g_.out[j].p; }, b.probe);
-        for (const Vec3& d : dirs_)
-            if (!covered(c, d, reach, b.probe) && !(region_ && !region_->inside(c + d * (depth + spacing_))))
-                return false;
+        for (const Vec3& d : dirs_) {
+            if (covered(c, d, reach, b.probe)) continue;
+            // While growing, the region's outside encloses too; in a covered tile only the
+            // directions out of it need an element (those into it are covered ground).
+            const bool outside = region_ && !region_->inside(c + d * (depth + spacing_));
+            if (enclosed_only_ ? !outside : outside) return false;
+        }
         return true;
     }
 

@@ -16,12 +16,14 @@ namespace tessera::grow {
 // exemplars of single-sample elements (returns 0 otherwise). Returns how many were added.
 int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region);
 
-// The same for a region growth has covered (not a world's tile), probed on a lattice: every
-// hole in it deeper than 1.25x the exemplar's counts, enclosed or not. Where two holes run
-// into each other (a gap along the region's edge, two misaligned patches' seam) neither is
-// enclosed, and a random pattern's grown output kept holes 1.4x the exemplar's largest
-// along its edge. Adds the repair of the inserted elements' neighbours. Returns how many
-// were added.
+// The same for a region growth has covered, probed on a lattice: every hole in it deeper
+// than 1.25x the exemplar's counts, enclosed or not. Where two holes run into each other (a
+// gap along the region's edge, two misaligned patches' seam) neither is enclosed, and a
+// random pattern's grown output kept holes 1.4x the exemplar's largest along its edge. In a
+// world's tile (an open region) a hole counts only when elements close it in every
+// direction out of the tile: one open toward a face whose tile is not grown yet is that
+// tile's to fill (filled here, a 3D world of spheres crowded its seams). Adds the repair of
+// the inserted elements' neighbours. Returns how many were added.
 int fill_covered_holes(Grower::Impl& g, int first, int end, const Domain& region);
 
 }  // namespace tessera::grow

@@ -273,6 +273,20 @@ TEST(World, BordersKeepThePairCorrelationAndNoPairCrowdsAcrossThem) {
               1.3 * largest_empty_circle(ex).radius);
 }
 
+// A random pattern's holes run deeper than a hard-core pattern's, and a tile's rounds fill
+// only enclosed ones; the covered pass fills those closed toward the tile's faces too (a
+// 4 x 4 world of Japanese pines kept one 1.9x the exemplar's largest inside a tile).
+TEST(World, ARandomPatternsTilesLeaveNoDeepHoleInside) {
+    const Exemplar ex = test::field_pattern("japanesepines");
+    const double size = ex.domain.bounds().size().x;
+    World w(ex, world_options(size, 2));
+    const Arrangement all = merged(w, block(4));
+    // Away from the world's outer faces (open toward tiles not made).
+    const Arrangement inner = window(all, {size * 0.5, size * 0.5, 0}, {size * 3.5, size * 3.5, 0});
+    EXPECT_LE(largest_empty_circle(inner).radius, 1.3 * largest_empty_circle(ex).radius);
+    test::expect_no_crowding(ex, all, "Japanese pines over 4 x 4 tiles");
+}
+
 TEST(World, EveryTileKeepsTheClassShares) {
     const Exemplar ex = example("striped_dots_2d");
     World w(ex, world_options(14.0));
