@@ -5,6 +5,7 @@
 
 #include "apps/studio/palette.hpp"
 #include "apps/studio/server_context.hpp"
+#include "apps/studio/session_history.hpp"
 #include "apps/studio/session_ops.hpp"
 #include "apps/studio/static_files.hpp"
 
@@ -63,7 +64,8 @@ void load_session(ServerContext& ctx, const RouteRequest& r, httplib::Response& 
     Json job;
     if (!ops.empty()) {
         try {
-            job = start_ops_job(ctx, session, std::move(ops));
+            // Its ops are where the session starts, not a step to undo.
+            job = start_ops_job(ctx, session, std::move(ops), StepOf{std::nullopt, false});
         } catch (...) {
             ctx.sessions.remove(session->id);  // nothing half-loaded stays
             throw;
@@ -93,21 +95,35 @@ void add_palette(ServerContext& ctx, const RouteRequest& r, httplib::Response& r
     if (body.contains("path") == body.contains("exemplar")) bad_request("give one of path or exemplar");
     const std::string key = body.contains("path") ? "path" : "exemplar";
     const tessera::Exemplar exemplar = load_palette_exemplar(body[key], key, ctx.config.root);
-    add_palette_entry(*session, {name, body[key]}, exemplar);
+    add_palette_entry(*session, {name, body[key], 0.0, nullptr}, exemplar);
     send_json(res, 201,
               {{"name", name}, {"dimension", exemplar.dimension}, {"elements", exemplar.elements.size()}});
 }
 
+// The op's undo group ("group": an integer >= 0 the client picks per gesture), taken out of
+// the body: the op itself is what a session file stores.
+std::optional<std::int64_t> take_group(Json& body) {
+    const auto it = body.is_object() ? body.find("group") : body.end();
+    if (it == body.end()) return std::nullopt;
+    if (!it->is_number_integer() || it->get<std::int64_t>() < 0)
+        bad_request("group: expected an integer >= 0, got " + it->dump());
+    const std::int64_t group = it->get<std::int64_t>();
+    body.erase(it);
+    return group;
+}
+
 void run_op(ServerContext& ctx, const RouteRequest& r, httplib::Response& res) {
     const auto session = find_session(ctx.sessions, r.params[0]);
-    OpRequest op = parse_op(parse_body(r.body), session->dimension);
+    Json body = parse_body(r.body);
+    const std::optional<std::int64_t> group = take_group(body);
+    OpRequest op = parse_op(body, session->dimension);
     if (runs_in_request(*session, op)) {
-        send_json(res, 200, apply_now(*session, op));
+        send_json(res, 200, apply_now(*session, op, group));
         return;
     }
     std::vector<OpRequest> ops;
     ops.push_back(std::move(op));
-    send_json(res, 202, {{"job", start_ops_job(ctx, session, std::move(ops))}});
+    send_json(res, 202, {{"job", start_ops_job(ctx, session, std::move(ops), StepOf{group, true})}});
 }
 
 void export_session(ServerContext& ctx, const RouteRequest& r, httplib::Response& res) {
@@ -127,9 +143,9 @@ void export_session(ServerContext& ctx, const RouteRequest& r, httplib::Response
 }  // namespace
 
 std::string start_ops_job(ServerContext& ctx, const std::shared_ptr<Session>& session,
-                          std::vector<OpRequest> ops) {
+                          std::vector<OpRequest> ops, StepOf step) {
     const std::string id = ctx.job_ids.next();
-    JobRunner::Work work = prepare_job(session, std::move(ops), id);  // 409 when busy
+    JobRunner::Work work = prepare_job(session, std::move(ops), id, step);  // 409 when busy
     if (!ctx.jobs.start(id, session->id, std::move(work))) {
         release_job(*session, id);
         throw ApiError(503,
@@ -156,6 +172,12 @@ void add_session_routes(Router& router, ServerContext& ctx) {
                [&ctx](const RouteRequest& r, httplib::Response& res) { add_palette(ctx, r, res); });
     router.add("POST", one + "/ops",
                [&ctx](const RouteRequest& r, httplib::Response& res) { run_op(ctx, r, res); });
+    router.add("POST", one + "/undo", [&ctx](const RouteRequest& r, httplib::Response& res) {
+        send_json(res, 200, undo_step(*find_session(ctx.sessions, r.params[0])));
+    });
+    router.add("POST", one + "/redo", [&ctx](const RouteRequest& r, httplib::Response& res) {
+        send_json(res, 200, redo_step(*find_session(ctx.sessions, r.params[0])));
+    });
     router.add("GET", one + "/file", [&ctx](const RouteRequest& r, httplib::Response& res) {
         const auto session = find_session(ctx.sessions, r.params[0]);
         res.set_header("Content-Disposition", "attachment; filename=\"" + session->id + ".brush.json\"");

@@ -9,6 +9,7 @@
 #include "apps/studio/palette.hpp"
 #include "apps/studio/router.hpp"
 #include "apps/studio/server.hpp"
+#include "apps/studio/session_ops.hpp"
 #include "apps/studio/sessions.hpp"
 
 namespace tessera_studio {
@@ -30,10 +31,10 @@ struct ServerContext {
     std::atomic<std::uint64_t> exports{0};
 };
 
-// Starts a job applying `ops` to `session`; returns its id. 409 when the session is busy,
-// 503 when the server runs its maximum of jobs.
+// Starts a job applying `ops` to `session` (one undo step, `step`); returns its id. 409 when
+// the session is busy, 503 when the server runs its maximum of jobs.
 std::string start_ops_job(ServerContext& ctx, const std::shared_ptr<Session>& session,
-                          std::vector<OpRequest> ops);
+                          std::vector<OpRequest> ops, StepOf step = {});
 
 // The routes, by group: static files, /api/files and /api/palette; sessions; jobs.
 void add_file_routes(Router& router, ServerContext& ctx);

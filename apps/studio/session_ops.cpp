@@ -6,6 +6,7 @@
 #include "apps/studio/canvas_changes.hpp"
 #include "apps/studio/canvas_spec.hpp"
 #include "apps/studio/paint_estimate.hpp"
+#include "apps/studio/session_history.hpp"
 #include "apps/studio/static_files.hpp"
 #include "tessera/error.hpp"
 #include "tessera/io.hpp"
@@ -14,12 +15,6 @@ namespace tessera_studio {
 namespace fs = std::filesystem;
 
 namespace {
-
-void check_idle(const Session& session) {
-    if (!session.job.empty())
-        throw ApiError(409,
-                       "session " + session.id + " is busy with job " + session.job + "; wait or cancel it");
-}
 
 // Runs library code, turning its refusals into 400s.
 template <class Work>
@@ -90,6 +85,7 @@ void add_palette_entry(Session& session, PaletteEntry entry, const tessera::Exem
     check_idle(session);
     library_call([&] { return session.canvas.add_exemplar(entry.name, exemplar); });
     entry.density = exemplar_density(exemplar);
+    entry.exemplar = std::make_shared<const tessera::Exemplar>(exemplar);
     session.palette.push_back(std::move(entry));
 }
 
@@ -106,13 +102,15 @@ ResolvedOp resolve_op(const Session& session, OpRequest request) {
     return op;
 }
 
-Json apply_now(Session& session, const OpRequest& request) {
+Json apply_now(Session& session, const OpRequest& request, std::optional<std::int64_t> group) {
     std::lock_guard lock(session.mutex);
     check_idle(session);
     const ResolvedOp op = resolve_op(session, request);
+    std::optional<SessionState> state = state_before(session, group);
     const CanvasMark before = mark_canvas(session.canvas);
     const tessera::BrushReport report = library_call([&] { return apply_op(session.canvas, op); });
     session.ops.push_back(op_json(op.request, session.dimension));
+    commit_step(session, std::move(state), group);
     return {{"report", report_json(report)}, {"changes", appended_since(session.canvas, before)}};
 }
 
@@ -128,14 +126,14 @@ bool runs_in_request(Session& session, const OpRequest& request) {
 }
 
 JobRunner::Work prepare_job(const std::shared_ptr<Session>& session, std::vector<OpRequest> requests,
-                            const std::string& job_id) {
+                            const std::string& job_id, StepOf step) {
     std::lock_guard lock(session->mutex);
     check_idle(*session);
     std::vector<ResolvedOp> ops;
     for (OpRequest& r : requests) ops.push_back(resolve_op(*session, std::move(r)));
     auto copy = std::make_shared<tessera::BrushCanvas>(session->canvas);
     session->job = job_id;
-    return [session, ops = std::move(ops), copy, job_id](const tessera::Progress& progress) {
+    return [session, ops = std::move(ops), copy, job_id, step](const tessera::Progress& progress) {
         Json report;
         try {
             report = apply_all(*copy, ops, progress);
@@ -144,8 +142,13 @@ JobRunner::Work prepare_job(const std::shared_ptr<Session>& session, std::vector
             throw;
         }
         std::lock_guard lock(session->mutex);
+        // The canvas the job started from is the step's state before (no copy to make).
+        std::optional<SessionState> before;
+        if (step.undoable && starts_step(*session, step.group))
+            before = SessionState{std::move(session->canvas), session->ops, session->palette.size()};
         session->canvas = std::move(*copy);
         for (const ResolvedOp& op : ops) session->ops.push_back(op_json(op.request, session->dimension));
+        if (step.undoable) commit_step(*session, std::move(before), step.group);
         session->job.clear();
         return report;
     };
@@ -170,6 +173,8 @@ Json session_view(Session& session) {
             {"options", brush_options_json(canvas.options())},
             {"palette", std::move(palette)},
             {"ops", session.ops.size()},
+            {"undo", session.undo.size()},
+            {"redo", session.redo.size()},
             {"job", session.job.empty() ? Json() : Json(session.job)},
             {"arrangement", Json::parse(tessera::to_json(canvas.arrangement()))},
             {"directions", std::move(directions)},
@@ -199,7 +204,7 @@ SessionFileContent parse_session_file(const Json& doc) {
     content.options = doc.contains("options") ? doc["options"] : Json();
     if (const auto it = doc.find("palette"); it != doc.end()) {
         if (!it->is_object()) bad_request("palette: expected an object {name: path or exemplar}");
-        for (const auto& [name, source] : it->items()) content.palette.push_back({name, source});
+        for (const auto& [name, source] : it->items()) content.palette.push_back({name, source, 0.0, nullptr});
     }
     content.ops = doc.contains("ops") ? doc["ops"] : Json::array();
     if (!content.ops.is_array()) bad_request("ops: expected an array");

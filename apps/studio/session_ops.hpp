@@ -6,7 +6,9 @@
 #pragma once
 
 #include <filesystem>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,17 +38,23 @@ ResolvedOp resolve_op(const Session& session, OpRequest request);
 
 // Applies `request` now, in the caller's thread; returns {"report", "changes"} (the elements
 // it appended, canvas_changes.hpp, or null when it changed more). 409 while a job runs.
-Json apply_now(Session& session, const OpRequest& request);
+// `group`: the client's group of the operation, one undo step (session_history.hpp).
+Json apply_now(Session& session, const OpRequest& request, std::optional<std::int64_t> group = std::nullopt);
 // Whether `request` runs in the request thread (apply_now) rather than as a job: direction
 // and erase always, paint when it makes few elements (paint_estimate.hpp); fill and optimize
 // never.
 bool runs_in_request(Session& session, const OpRequest& request);
 
 // Marks the session busy with job `job_id` and returns the work that applies `ops` in order
-// on a copy of the canvas and commits it (canvas and ops) at the end; 409 while another job
-// runs. release_job() undoes the mark when the job could not be started.
+// on a copy of the canvas and commits it (canvas and ops) at the end, as one undo step of
+// `group` unless `undoable` is false (the replay of a loaded session file); 409 while
+// another job runs. release_job() undoes the mark when the job could not be started.
+struct StepOf {
+    std::optional<std::int64_t> group;
+    bool undoable = true;
+};
 JobRunner::Work prepare_job(const std::shared_ptr<Session>& session, std::vector<OpRequest> ops,
-                            const std::string& job_id);
+                            const std::string& job_id, StepOf step = {});
 void release_job(Session& session, const std::string& job_id);
 
 // GET /api/sessions/ID: the canvas, palette, options, ops count, running job, and the

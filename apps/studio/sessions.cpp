@@ -21,6 +21,12 @@ Session::Session(std::string id_, std::string canvas_text_, int dimension_, tess
       dimension(dimension_),
       canvas(std::move(canvas_)) {}
 
+void check_idle(const Session& session) {
+    if (!session.job.empty())
+        throw ApiError(409,
+                       "session " + session.id + " is busy with job " + session.job + "; wait or cancel it");
+}
+
 SessionRegistry::SessionRegistry(size_t max_sessions) : max_sessions_(max_sessions) {}
 
 void SessionRegistry::add(std::shared_ptr<Session> session) {

@@ -1,15 +1,18 @@
 // apps/studio/sessions.hpp — the sessions of a studio server (docs/studio.md, "Sessions").
 // A session is one canvas a client paints: its canvas text, the tessera::BrushCanvas, the
 // palette entries as they were given (a path under the root or an inline exemplar), the
-// operations applied, and the job running on it if any. Each session is guarded by its own
+// operations applied, the states undo and redo go back to (session_history.hpp), and the
+// job running on it if any. Each session is guarded by its own
 // mutex and the registry by another, so clients working on different sessions never wait
 // for each other; a job works on a copy of the canvas and swaps it in when it ends.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -37,6 +40,17 @@ struct PaletteEntry {
     std::string name;
     Json source;  // "relative/path.json" under the root, or the inline exemplar object
     double density = 0.0;  // its exemplar's elements per unit area or volume (paint_estimate.hpp)
+    // The exemplar as added: a canvas that undo restores from before the entry was added
+    // gets it again.
+    std::shared_ptr<const tessera::Exemplar> exemplar;
+};
+
+// What undo and redo go back to: the canvas and the operations as they were, and how many
+// palette entries the session had then.
+struct SessionState {
+    tessera::BrushCanvas canvas;
+    Json ops;
+    size_t palette = 0;
 };
 
 // Everything below `mutex` is guarded by it.
@@ -51,7 +65,15 @@ struct Session {
     std::vector<PaletteEntry> palette;
     Json ops = Json::array();  // the operations applied, as a session file stores them
     std::string job;           // the running job's id, "" when none runs
+    // Undo steps (the state before each step, the last one last) and redo steps; the
+    // client's group of the last operation applied (its gesture: a stroke sent as several
+    // paint operations is one step).
+    std::deque<SessionState> undo, redo;
+    std::optional<std::int64_t> last_group;
 };
+
+// 409 naming the job while one runs on the session (call with its mutex held).
+void check_idle(const Session& session);
 
 class SessionRegistry {
 public:

@@ -3,20 +3,26 @@
 // (following the jobs of the long ones), reading its arrangement back, undo and redo, and
 // session files.
 //
-// Undo and redo keep the operations client side, in groups (one group per gesture: a painted
-// stroke is sent as several paint operations while it is drawn). Undo makes a new session
-// from the session file with the last group's operations cut (POST /api/sessions/load, which
-// replays the rest as one job) and drops the old session; redo applies the group again (the
-// library is deterministic, so the result is the one undone).
+// Undo and redo are the server's (POST /api/sessions/ID/undo and /redo): each operation
+// carries the group of its gesture (a painted stroke is sent as several paint operations
+// while it is drawn, one group), and the server keeps the canvas as it was before each group,
+// so an undo is a swap, not a replay. The groups are mirrored here for the buttons and for
+// drawing the strokes; a session file's operations, replayed when it is opened, are where its
+// session starts and are not undone.
 import { api } from './api.js';
 import { followJob } from './jobs.js';
 import { readDocument } from './exemplar.js';
 import { canvasDimension } from './canvas_presets.js';
 import { createQueue } from './store.js';
 
+// Steps the server keeps per session (apps/studio/session_history.hpp, max_undo_steps).
+const MAX_UNDO_STEPS = 64;
+
 export function createSession(store) {
   const queue = createQueue();
   let openGroup = null; // the ops of the gesture in progress
+  let groupId = 0; // the server's undo group of the gesture in progress (or of a lone op)
+  let baseOps = []; // ops no longer undoable (an opened file's, the steps past the server's bound)
 
   const message = (text, kind = '') => store.set({ message: { text, kind, at: performance.now() } });
   const setBusy = () => store.set({ busy: queue.pending > 0 });
@@ -101,12 +107,10 @@ export function createSession(store) {
     return true;
   }
 
-  function allOps() {
-    return store.state.groups.flat();
-  }
-
   function setGroups(groups, redo = store.state.redo) {
-    store.set({ groups, redo, ops: groups.flat() });
+    const kept = groups.slice();
+    while (kept.length > MAX_UNDO_STEPS) baseOps = baseOps.concat(kept.shift());
+    store.set({ groups: kept, redo, ops: baseOps.concat(kept.flat()) });
   }
 
   async function replaceSession(created, canvas, dimension, entries) {
@@ -120,6 +124,7 @@ export function createSession(store) {
     return serial(async () => {
       const created = await api.createSession(canvas, options);
       await replaceSession(created, canvas, created.dimension, []);
+      baseOps = [];
       setGroups([], []);
       await refresh();
       message(`New ${created.dimension}D canvas ${canvas}`);
@@ -140,7 +145,8 @@ export function createSession(store) {
   async function applyNow(op, label) {
     const s = store.state.session;
     const t0 = performance.now();
-    const answer = await api.op(s.id, op);
+    const group = openGroup ? groupId : ++groupId;
+    const answer = await api.op(s.id, { ...op, group });
     const t1 = performance.now();
     let result;
     if (answer.job) {
@@ -172,6 +178,7 @@ export function createSession(store) {
   function beginGroup() {
     return serial(async () => {
       openGroup = [];
+      ++groupId;
     });
   }
   function endGroup() {
@@ -182,11 +189,9 @@ export function createSession(store) {
     });
   }
 
-  // The session file of the current session, with the ops cut to `count` when given.
-  async function sessionFile(count) {
-    const file = await api.sessionFile(store.state.session.id);
-    if (count !== undefined) file.ops = file.ops.slice(0, count);
-    return file;
+  // The session file of the current session.
+  function sessionFile() {
+    return api.sessionFile(store.state.session.id);
   }
 
   // Replaces the session with one made from `file` (its ops replayed as one job).
@@ -204,9 +209,7 @@ export function createSession(store) {
       const groups = store.state.groups;
       if (!groups.length) return;
       const last = groups[groups.length - 1];
-      const keep = allOps().length - last.length;
-      const file = await sessionFile(keep);
-      await loadFrom(file, 'undo');
+      await api.undo(store.state.session.id);
       setGroups(groups.slice(0, -1), [...store.state.redo, last]);
       await refresh();
       message(`Undid ${describe(last)}`);
@@ -218,15 +221,9 @@ export function createSession(store) {
       const redoStack = store.state.redo;
       if (!redoStack.length) return;
       const group = redoStack[redoStack.length - 1];
-      store.set({ redo: redoStack.slice(0, -1) });
-      openGroup = [];
-      try {
-        for (const op of group) await applyNow(op, 'redo');
-      } finally {
-        const done = openGroup;
-        openGroup = null;
-        if (done.length) store.set({ groups: [...store.state.groups, done], ops: [...store.state.ops, ...done] });
-      }
+      await api.redo(store.state.session.id);
+      setGroups([...store.state.groups, group], redoStack.slice(0, -1));
+      await refresh();
       message(`Redid ${describe(group)}`);
     });
   }
@@ -239,8 +236,9 @@ export function createSession(store) {
   function openFile(file) {
     return serial(async () => {
       await loadFrom(file, 'open');
-      const ops = Array.isArray(file.ops) ? file.ops : [];
-      setGroups(ops.map((op) => [op]), []);
+      baseOps = Array.isArray(file.ops) ? file.ops : [];
+      setGroups([], []);
+      const ops = baseOps;
       await refresh();
       message(`Opened a session: ${file.canvas}, ${ops.length} operations`, 'ok');
     });
