@@ -83,8 +83,9 @@ void add_solver_rows(OptionTable<O>& t) {
                             "box (periodic); off = it is put back at the nearest point inside.",
                             [](auto& o) -> auto& { return o.wrap; }));
     t.push_back(flag_row<O>("physics",
-                            "Frame by frame: a physics sub-step after each advection and each frame's assignment "
-                            "(Bullet, no gravity) pushes apart particles closer than the exemplar's closest pair.",
+                            "A physics sub-step (Bullet, no gravity) pushes apart particles closer than the "
+                            "exemplar's closest pair: frame by frame after each advection and each frame's "
+                            "assignment; all frames after each round's assignment, on every frame.",
                             [](auto& o) -> auto& { return o.physics; }));
 }
 

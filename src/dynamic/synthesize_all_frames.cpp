@@ -13,6 +13,7 @@
 #include "dynamic/all_frames.hpp"
 #include "dynamic/all_frames_init.hpp"
 #include "dynamic/all_frames_solve.hpp"
+#include "dynamic/collision_step.hpp"
 #include "dynamic/graph_exemplar.hpp"
 #include "tessera/error.hpp"
 #include "tessera/metrics.hpp"
@@ -37,9 +38,6 @@ void check_inputs(const Animation& exemplar, const Domain& domain, const Dynamic
                                            "D but the exemplar is " + std::to_string(exemplar.structure.dimension) + "D");
     if (options.shape == NeighbourhoodShape::full)
         throw Error(ErrorKind::option, "shape full is not available with sequencing all (use shape compact)");
-    if (options.physics)
-        throw Error(ErrorKind::option, "physics is a sub-step of frame-by-frame advection, not available with "
-                                       "sequencing all (use sequencing frame)");
     const int window = 2 * reach_of(options) + 1;
     if (exemplar.frame_count() < window)
         throw Error(ErrorKind::option, "sequencing all: the exemplar needs at least " + std::to_string(window) +
@@ -96,13 +94,35 @@ Periodic periodic_of(const Domain& domain, bool wrap) {
     return {true, domain.bounds().lo, domain.bounds().size()};
 }
 
-// One round: search (returning its energy), then the assignment, then the domain.
+// The physics sub-step (Figure 5) on every frame: the particles each frame holds are pushed
+// apart where closer than the exemplar's come, and out of the domain's walls and obstacles.
+// Frame by frame it follows each advection; here every frame is made at once, so it follows
+// each round's assignment, and the next round's temporal neighbourhoods smooth what it moved
+// (the last round's moves stay: no collision is put back). Frames in order, one Bullet world
+// at a time, so the bits do not depend on the thread count. Returns the particles moved.
+int resolve_collisions(AllFrames& out, CollisionStep& collisions, const Domain& domain, bool wrap) {
+    const int n = out.size();
+    std::vector<Vec3> frame(n);
+    int moved = 0;
+    for (int f = 0; f < out.frames(); ++f) {
+        std::copy_n(out.positions().begin() + static_cast<long>(f) * n, n, frame.begin());
+        moved += collisions.apply(frame);
+        for (Vec3& p : frame) keep_inside_domain(p, domain, wrap);
+        std::copy(frame.begin(), frame.end(), out.positions().begin() + static_cast<long>(f) * n);
+    }
+    return moved;
+}
+
+// One round: search (returning its energy), then the assignment, the domain and the physics
+// sub-step when asked for.
 double search_and_assign(const InputFrames& input, AllFrames& out, const StParams& params, SearchSettings& settings,
-                         std::vector<SearchScratch>& scratch, const Domain& domain, const DynamicOptions& options) {
+                         std::vector<SearchScratch>& scratch, const Domain& domain, const DynamicOptions& options,
+                         CollisionStep* collisions) {
     out.index_frames(options.threads);
     const double energy = search_all_frames(input, out, params, settings, scratch, options.threads);
     assign_all_frames(out, params.radius, params, options.threads);
     for (Vec3& p : out.positions()) keep_inside_domain(p, domain, options.wrap);
+    if (collisions) resolve_collisions(out, *collisions, domain, options.wrap);
     return energy;
 }
 
@@ -133,6 +153,11 @@ AnimatedArrangement synthesize_all_frames(const Animation& given, const Domain& 
     for (size_t s = 0; s < first_positions.size(); ++s) first_positions[s] = first.samples[s].p;
     copy_trajectories(exemplar, input, first_positions, source, params.ahead, domain, options.wrap, out,
                       options.threads);
+    std::optional<CollisionStep> collisions;  // the physics sub-step, when asked for
+    if (options.physics) {
+        collisions.emplace(exemplar, domain, options.wrap);
+        resolve_collisions(out, *collisions, domain, options.wrap);  // the patch copy's seams first
+    }
 
     AnimatedArrangement result;
     result.stats.method = "dynamic";
@@ -148,7 +173,8 @@ AnimatedArrangement synthesize_all_frames(const Animation& given, const Domain& 
     for (int round = 0; round < options.iterations; ++round) {
         const double round_start = elapsed();
         settings.round = round;
-        const double energy = search_and_assign(input, out, params, settings, scratch, domain, options);
+        const double energy = search_and_assign(input, out, params, settings, scratch, domain, options,
+                                                collisions ? &*collisions : nullptr);
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - round_start);
         if (progress && !progress(ProgressEvent{"iteration", round + 1, options.iterations, energy, elapsed(),
