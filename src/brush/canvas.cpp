@@ -17,6 +17,7 @@
 #include "brush/strokes.hpp"
 #include "brush/surface.hpp"
 #include "core/progress_span.hpp"
+#include "core/spatial_grid.hpp"
 #include "tessera/error.hpp"
 #include "tessera/option_table.hpp"
 
@@ -132,6 +133,45 @@ void remove_elements(BrushCanvas::Impl& st, const std::vector<char>& remove) {
     st.relative = std::move(relative);
 }
 
+// Samples of two palette entries closer than this share of their summed weights overlap.
+constexpr double kOverlapShare = 0.8;
+
+// The solve's conflict term (Eq. 3) is a penalty, not a bound: where two entries' parts meet
+// after a fill it left a few pairs of their samples under kOverlapShare of their summed
+// weights (4 on the design example). Each such pair loses an unlocked element (the later one
+// when both are), so that no elements of two entries overlap. Returns how many went.
+int drop_overlaps_between_entries(BrushCanvas::Impl& st) {
+    const Arrangement& arr = st.arrangement;
+    const int n = static_cast<int>(arr.samples.size());
+    if (n == 0 || st.palette.size() < 2) return 0;
+    std::vector<Vec3> points(n);
+    double reach = 0.0;
+    for (int s = 0; s < n; ++s) points[s] = arr.samples[s].p, reach = std::max(reach, st.weight_of_sample(s));
+    core::SpatialGrid grid;
+    grid.build(points, std::max(2.0 * reach, 1e-6), st.dimension);
+    auto kappa_of = [&](int s) { return st.out_types[arr.elements[arr.samples[s].element].type].kappa; };
+    std::vector<char> remove(arr.elements.size(), 0);
+    std::vector<int> near;
+    for (int a = 0; a < n; ++a) {
+        near.clear();
+        const double wa = st.weight_of_sample(a);
+        grid.for_each_within(points[a], wa + reach, [&](int b, double d2) {
+            const double summed = kOverlapShare * (wa + st.weight_of_sample(b));
+            if (b > a && kappa_of(b) != kappa_of(a) && d2 < summed * summed) near.push_back(b);
+        });
+        std::sort(near.begin(), near.end());  // the grid's order is not the samples'
+        for (const int b : near) {
+            const int ea = arr.samples[a].element, eb = arr.samples[b].element;
+            const Element &ca = arr.elements[ea], &cb = arr.elements[eb];
+            if (remove[ea] || remove[eb] || (ca.locked && cb.locked)) continue;
+            remove[cb.locked ? ea : (ca.locked ? eb : std::max(ea, eb))] = 1;
+        }
+    }
+    const int dropped = static_cast<int>(std::count(remove.begin(), remove.end(), 1));
+    if (dropped > 0) remove_elements(st, remove);
+    return dropped;
+}
+
 }  // namespace
 
 BrushCanvas::BrushCanvas(const Domain& domain, const BrushOptions& options)
@@ -242,16 +282,33 @@ BrushReport BrushCanvas::erase(const Stroke& stroke) {
 
 namespace {
 
-// The palette entry of the nearest element among `entries` (a brute-force scan: fill runs it
-// over the cells of a coarse grid, against the painted elements only).
-int nearest_entry(const BrushCanvas::Impl& st, const std::vector<char>& entries, const Vec3& p) {
-    double best = std::numeric_limits<double>::infinity();
-    int kappa = -1;
+// The elements of `entries` before the fill grows anything: their places and entries. Every
+// entry's part of the canvas is measured against these: measured against the canvas as the
+// earlier entries' growth left it, a later entry's part lost the cells next to their new
+// elements, which no entry then filled (a band between two painted parts stayed empty).
+struct PaintedPlaces {
+    std::vector<Vec3> position;
+    std::vector<int> kappa;
+};
+PaintedPlaces painted_places(const BrushCanvas::Impl& st, const std::vector<char>& entries) {
+    PaintedPlaces places;
     for (const Element& e : st.arrangement.elements) {
         const int k = st.out_types[e.type].kappa;
         if (!entries[k]) continue;
-        const double d2 = squared_norm(e.position - p);
-        if (d2 < best) best = d2, kappa = k;
+        places.position.push_back(e.position);
+        places.kappa.push_back(k);
+    }
+    return places;
+}
+
+// The palette entry of the nearest painted place (a brute-force scan: fill runs it over the
+// cells of a coarse grid, against the painted elements only).
+int nearest_entry(const PaintedPlaces& places, const Vec3& p) {
+    double best = std::numeric_limits<double>::infinity();
+    int kappa = -1;
+    for (size_t i = 0; i < places.position.size(); ++i) {
+        const double d2 = squared_norm(places.position[i] - p);
+        if (d2 < best) best = d2, kappa = places.kappa[i];
     }
     return kappa;
 }
@@ -316,6 +373,7 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
         r.added += added, r.removed += dropped;
     } else {
         const int parts = static_cast<int>(std::count(entries.begin(), entries.end(), 1));
+        const PaintedPlaces painted = painted_places(st, entries);
         for (int k = 0, part = 0; k < static_cast<int>(entries.size()); ++k) {
             if (!entries[k]) continue;
             const double share = kFillGrowthShare / parts;
@@ -324,7 +382,7 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
             std::optional<Domain> region;
             try {  // the cells nearer to an element of entry k than to any other entry's
                 region = Domain::region(
-                    st.space(), [&](const Vec3& p) { return nearest_entry(st, entries, p) == k; }, 0.5 * spacing,
+                    st.space(), [&](const Vec3& p) { return nearest_entry(painted, p) == k; }, 0.5 * spacing,
                     "the part of the canvas nearest to '" + st.names[k] + "'");
             } catch (const Error&) {
                 continue;  // no cell of the canvas is nearest to it
@@ -338,6 +396,7 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
         return optimize(st.options.iterations);
     }();
     r.iterations = solved.iterations;
+    r.removed += solved.removed;
     r.lbfgs_bound_hits = solved.lbfgs_bound_hits;
     r.energy = solved.energy;
     r.seconds = seconds_since(start);
@@ -390,6 +449,7 @@ BrushReport BrushCanvas::optimize(int iterations) {
         if (assign_positions(st, movable, matches)) ++r.solve_bound_hits;  // Eq. 1, 3, 4
         ++r.iterations;
     }
+    r.removed += drop_overlaps_between_entries(st);
     const Energies& e = kept;
     r.energy = e.distribution + e.conflict + e.graph + e.alignment + e.continuity + e.rigidity;
     st.arrangement.stats.final_energy = r.energy;

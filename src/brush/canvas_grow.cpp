@@ -15,8 +15,13 @@ namespace tessera::brush {
 namespace {
 
 // Share of the summed weights under which two samples of different elements conflict when a
-// grown element is added (Eq. 3 resolves smaller overlaps in the solve).
+// grown element is added (Eq. 3 resolves smaller overlaps in the solve): of one palette
+// entry, whose exemplar's own closest pairs may come closer than its weights, and of two
+// entries, whose exemplars never showed them together. Between entries the whole weights:
+// the solve after the fill moves elements, and with 0.8 there it pushed a few pairs where
+// two entries' parts meet under 0.8 of their summed weights.
 constexpr double kConflictShare = 0.8;
+constexpr double kConflictShareBetweenEntries = 1.0;
 
 // The canvas's elements of entry kappa within `reach` of the region's bounds, in the entry's
 // own types, as the grower's existing arrangement.
@@ -44,14 +49,18 @@ Arrangement existing_of_entry(const BrushCanvas::Impl& st, int kappa, const Doma
     return out;
 }
 
-// True when a sample of `candidate` (positions, weights) comes closer to a canvas sample of
-// another element than kConflictShare of their summed weights.
+// True when a sample of `candidate` (positions, weights; of palette entry kappa) comes closer
+// to a canvas sample of another element than kConflictShare (of its entry) or
+// kConflictShareBetweenEntries of their summed weights.
 bool conflicts(const BrushCanvas::Impl& st, const core::SpatialGrid& grid, double reach, const std::vector<Vec3>& points,
-               const std::vector<double>& weights) {
+               const std::vector<double>& weights, int kappa) {
+    const Arrangement& arr = st.arrangement;
     bool hit = false;
     for (size_t k = 0; k < points.size() && !hit; ++k)
         grid.for_each_within(points[k], weights[k] + reach, [&](int o, double d2) {
-            const double summed = kConflictShare * (weights[k] + st.weight_of_sample(o));
+            const bool same_entry = st.out_types[arr.elements[arr.samples[o].element].type].kappa == kappa;
+            const double share = same_entry ? kConflictShare : kConflictShareBetweenEntries;
+            const double summed = share * (weights[k] + st.weight_of_sample(o));
             if (d2 < summed * summed) hit = true;
         });
     return hit;
@@ -110,7 +119,7 @@ std::pair<int, int> grow_entry(BrushCanvas::Impl& st, int kappa, const Domain& r
         const std::vector<double>& w = entry.weights[e.type];
         bool inside = true;  // an open region's edge lets samples reach beyond it, never the canvas's
         for (const Vec3& q : sample_points) inside = inside && st.space().inside(q);
-        if (!inside || conflicts(st, grid, reach, sample_points, w)) {
+        if (!inside || conflicts(st, grid, reach, sample_points, w, kappa)) {
             ++dropped;
             continue;
         }

@@ -19,7 +19,10 @@ namespace tessera {
 
 namespace {
 
-using Json = nlohmann::json;
+// Ordered: the palette's entries are the canvas's in the file's order (kappa, the order of
+// the arrangement's types), as the studio writes and reads them; a sorted object replayed a
+// studio session whose entries were not added in alphabetical order to another arrangement.
+using Json = nlohmann::ordered_json;
 
 struct Reader {
     std::string source;
