@@ -8,7 +8,7 @@
 // sticks_2d and paints a stroke with the mouse, picks poisson_disk_2d and paints another, draws
 // a direction stroke, clicks "Fill the rest", waits for the job, exports JSON from the Export
 // menu and checks the downloaded file:
-//   - element count within 30% of the density's: the canvas area, each place counted at the
+//   - element count within 15% of the density's: the canvas area, each place counted at the
 //     density (elements per area of its exemplar) of the palette entry of the nearest element;
 //   - sticks near a stroke (paint or direction) point along it: the angle between the
 //     element's orientation quaternion (its yaw; the exemplar's sticks lie along +x) and the
@@ -160,7 +160,7 @@ test('studio: paint, direct, fill and export in a real browser', { timeout: 3000
     report.expected = Math.round(expected);
     const ratio = elements.length / expected;
     report.count_ratio = +ratio.toFixed(3);
-    assert.ok(Math.abs(ratio - 1) <= 0.3, `${elements.length} elements, density says ${expected.toFixed(0)} (ratio ${ratio.toFixed(2)})`);
+    assert.ok(Math.abs(ratio - 1) <= 0.15, `${elements.length} elements, density says ${expected.toFixed(0)} (ratio ${ratio.toFixed(2)})`);
   });
 
   await t.test('sticks near a stroke point along it (within 15 degrees)', () => {
