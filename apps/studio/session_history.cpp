@@ -25,6 +25,18 @@ Json counts(const Session& s) {
     return {{"ops", s.ops.size()}, {"undo", s.undo.size()}, {"redo", s.redo.size()}};
 }
 
+// Undo (`back`) or redo: the last state of one stack in place, the replaced one on the other.
+Json take_step(Session& session, bool back) {
+    std::lock_guard lock(session.mutex);
+    check_idle(session);
+    std::deque<SessionState>& from = back ? session.undo : session.redo;
+    std::deque<SessionState>& to = back ? session.redo : session.undo;
+    if (from.empty())
+        throw ApiError(409, "session " + session.id + " has nothing to " + (back ? "undo" : "redo"));
+    swap_in(session, from, to);
+    return counts(session);
+}
+
 }  // namespace
 
 bool starts_step(const Session& session, std::optional<std::int64_t> group) {
@@ -45,20 +57,7 @@ void commit_step(Session& session, std::optional<SessionState> before, std::opti
     session.last_group = group;
 }
 
-Json undo_step(Session& session) {
-    std::lock_guard lock(session.mutex);
-    check_idle(session);
-    if (session.undo.empty()) throw ApiError(409, "session " + session.id + " has nothing to undo");
-    swap_in(session, session.undo, session.redo);
-    return counts(session);
-}
-
-Json redo_step(Session& session) {
-    std::lock_guard lock(session.mutex);
-    check_idle(session);
-    if (session.redo.empty()) throw ApiError(409, "session " + session.id + " has nothing to redo");
-    swap_in(session, session.redo, session.undo);
-    return counts(session);
-}
+Json undo_step(Session& session) { return take_step(session, true); }
+Json redo_step(Session& session) { return take_step(session, false); }
 
 }  // namespace tessera_studio
