@@ -13,7 +13,8 @@ AllFrames::AllFrames(int frames, std::vector<int> sample_types, int matches, con
     : params_(params), frames_(frames), matches_(matches), type_(std::move(sample_types)), periodic_(periodic) {
     const size_t n = type_.size() * static_cast<size_t>(frames);
     position_.assign(n, Vec3{});
-    drift_.assign(frames, Vec3{});
+    drift_.assign(n, Vec3{});
+    flow_step_.assign(frames, Vec3{});
     images_.resize(frames);
     grids_.resize(frames);
     match_.assign(n * matches, -1);
@@ -41,6 +42,13 @@ void AllFrames::build_images(int f) {
     grids_[f].build(im.points, params_.radius, params_.dimension);
 }
 
+void AllFrames::carry(const ObstacleFlow& flow, int threads) {
+    core::parallel_for(size(), threads, [&](int begin, int end, int) {
+        for (int s = begin; s < end; ++s)
+            for (int f = 1; f < frames_; ++f) drift(f, s) = drift(f - 1, s) + flow.displacement(at(f - 1, s), flow_step_[f]);
+    });
+}
+
 void AllFrames::index_frames(int threads) {
     core::parallel_for(frames_, threads, [&](int begin, int end, int) {
         for (int f = begin; f < end; ++f) build_images(f);
@@ -56,7 +64,7 @@ void AllFrames::gather(int s, int f, StNeighbourhood& out) const {
         const int dt = time_offset(k, params_), g = f + dt;
         if (k > 0) {
             if (g < 0 || g >= frames_) continue;  // beyond the animation: an empty group
-            const Vec3 d = difference(at(g, s), centre) - (drift_[g] - drift_[f]);
+            const Vec3 d = difference(at(g, s), centre) - (drift(g, s) - drift(f, s));
             out.entries.push_back({d, falloff(d, dt, params_), type_[s], s});
             continue;
         }

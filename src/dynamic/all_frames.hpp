@@ -1,13 +1,14 @@
 // The output animation of all-frame synthesis (section 4.1, "all-frame sequencing"): every
 // frame of every element at once, a grid per frame (with its periodic images under wrap),
-// the flow's displacement up to each frame (so that neighbourhoods compare the detail
-// motion, the output's motion less the global flow, with the exemplar's), and each
-// sample-frame's matches and predictions. Sample-frame (s, f) has index f * size() + s.
+// each sample's displacement by the flow up to each frame (so that neighbourhoods compare
+// the detail motion, the output's motion less the global flow, with the exemplar's), and
+// each sample-frame's matches and predictions. Sample-frame (s, f) has index f * size() + s.
 #pragma once
 
 #include <vector>
 
 #include "core/spatial_grid.hpp"
+#include "dynamic/obstacle_flow.hpp"
 #include "dynamic/output_frames.hpp"
 #include "dynamic/st_neighbourhood.hpp"
 
@@ -30,9 +31,16 @@ public:
     Vec3& at(int f, int s) { return position_[static_cast<size_t>(f) * type_.size() + s]; }
     const Vec3& at(int f, int s) const { return position_[static_cast<size_t>(f) * type_.size() + s]; }
     std::vector<Vec3>& positions() { return position_; }
-    // The flow's displacement from frame 0 to frame f (set by the caller).
-    std::vector<Vec3>& drift() { return drift_; }
-    const std::vector<Vec3>& drift() const { return drift_; }
+    // The far flow's step from frame f - 1 to frame f (index 0 unused; set by the caller).
+    std::vector<Vec3>& flow_steps() { return flow_step_; }
+    const std::vector<Vec3>& flow_steps() const { return flow_step_; }
+    // How far the flow carried sample s from frame 0 to frame f along its path.
+    Vec3& drift(int f, int s) { return drift_[static_cast<size_t>(f) * type_.size() + s]; }
+    const Vec3& drift(int f, int s) const { return drift_[static_cast<size_t>(f) * type_.size() + s]; }
+    // The drift along the current paths: each frame's step is the flow's displacement from
+    // the sample's place at the frame before (ObstacleFlow::displacement, which bends round
+    // the domain's obstacles; the step itself where the flow is uniform).
+    void carry(const ObstacleFlow& flow, int threads);
 
     // a - b, through the periodic border when wrapped (the nearest image).
     Vec3 difference(const Vec3& a, const Vec3& b) const;
@@ -40,7 +48,7 @@ public:
     void index_frames(int threads);
     // The temporal-non-causal neighbourhood of (s, f) (Figure 3, bottom; compact shape):
     // group 0 the spatial neighbours at f, group k >= 1 the sample itself at f + time_offset(k)
-    // less the flow's displacement between the two frames; groups beyond the output's first or
+    // less the sample's drift between the two frames; groups beyond the output's first or
     // last frame are empty.
     void gather(int s, int f, StNeighbourhood& out) const;
     // Calls fn(s') for each sample within `radius` of (s, f) at frame f (not s).
@@ -74,7 +82,7 @@ private:
     StParams params_;
     int frames_ = 0, matches_ = 1, stride_ = 0;
     std::vector<int> type_;
-    std::vector<Vec3> position_, drift_;
+    std::vector<Vec3> position_, drift_, flow_step_;
     Periodic periodic_;
     std::vector<PeriodicImages> images_;
     std::vector<core::SpatialGrid> grids_;

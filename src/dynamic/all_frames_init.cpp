@@ -42,7 +42,8 @@ Source continuation(const Animation& exemplar, const std::vector<int>& of_type, 
 }
 
 void copy_element(const Animation& exemplar, const InputFrames& input, const std::vector<int>& of_type,
-                  const Vec3& first, int source, int h, const Domain& domain, bool wrap, AllFrames& out, int s) {
+                  const Vec3& first, int source, int h, const Domain& domain, const ObstacleFlow& flow, bool wrap,
+                  AllFrames& out, int s) {
     const int frames = exemplar.frame_count();
     Source at{source, h};
     out.at(0, s) = first;
@@ -53,7 +54,9 @@ void copy_element(const Animation& exemplar, const InputFrames& input, const std
         ++at.frame;
         const Vec3 step = step_into(exemplar, at.frame, at.sample);
         before = last, last = step;
-        Vec3 p = out.at(f - 1, s) + step + (out.drift()[f] - out.drift()[f - 1]);
+        const Vec3 carried = flow.displacement(out.at(f - 1, s), out.flow_steps()[f]);
+        out.drift(f, s) = out.drift(f - 1, s) + carried;
+        Vec3 p = out.at(f - 1, s) + step + carried;
         keep_inside_domain(p, domain, wrap);
         out.at(f, s) = p;
         out.match(out.index(s, f))[0] = input.id(at.sample, at.frame);
@@ -77,8 +80,8 @@ Arrangement copy_first_frame(const Animation& exemplar, const Domain& domain, co
 }
 
 void copy_trajectories(const Animation& exemplar, const InputFrames& input, const std::vector<Vec3>& first,
-                       const std::vector<int>& source, int h, const Domain& domain, bool wrap, AllFrames& out,
-                       int threads) {
+                       const std::vector<int>& source, int h, const Domain& domain, const ObstacleFlow& flow,
+                       bool wrap, AllFrames& out, int threads) {
     const Exemplar& ex = exemplar.structure;
     std::vector<std::vector<int>> of_type(ex.types.size());
     for (int j = 0; j < exemplar.sample_count(); ++j) of_type[type_of(ex, j)].push_back(j);
@@ -86,8 +89,8 @@ void copy_trajectories(const Animation& exemplar, const InputFrames& input, cons
         out.size(), threads,
         [&](int begin, int end, int) {
             for (int s = begin; s < end; ++s)
-                copy_element(exemplar, input, of_type[type_of(ex, source[s])], first[s], source[s], h, domain, wrap,
-                             out, s);
+                copy_element(exemplar, input, of_type[type_of(ex, source[s])], first[s], source[s], h, domain, flow,
+                             wrap, out, s);
         },
         8);
 }

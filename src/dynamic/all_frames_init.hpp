@@ -23,15 +23,15 @@ namespace tessera::dynamic {
 Arrangement copy_first_frame(const Animation& exemplar, const Domain& domain, const DynamicOptions& options,
                              const StParams& params, int h, std::vector<int>& source);
 
-// Fills every frame of `out` (out.drift() set) from frame 0's positions `first` and the
-// sources: frame f + 1 = frame f + the source's motion + the flow's step, kept in the
-// domain; the source's sample-frame is the sample-frame's first match. Temporal patches are
-// chained: when the source reaches the exemplar's last frame, the element continues from the
+// Fills every frame of `out` (out.flow_steps() set) from frame 0's positions `first` and
+// the sources: frame f + 1 = frame f + the source's motion + the flow's displacement from
+// frame f's place (round the obstacles; out.drift() records it), kept in the domain; the
+// source's sample-frame is the sample-frame's first match. Temporal patches are chained: when the source reaches the exemplar's last frame, the element continues from the
 // exemplar sample-frame of its type whose last two frame steps best match the element's own
 // last two (the boundary compatibility of patch-based synthesis, in time), among frames
 // 2 .. G / 2 so that the continuation runs long; the element keeps its identity throughout.
 void copy_trajectories(const Animation& exemplar, const InputFrames& input, const std::vector<Vec3>& first,
-                       const std::vector<int>& source, int h, const Domain& domain, bool wrap, AllFrames& out,
-                       int threads);
+                       const std::vector<int>& source, int h, const Domain& domain, const ObstacleFlow& flow,
+                       bool wrap, AllFrames& out, int threads);
 
 }  // namespace tessera::dynamic

@@ -69,17 +69,16 @@ double frame_interval(const Animation& exemplar) {
     return n > 1 ? (exemplar.times.back() - exemplar.times.front()) / (n - 1) : 1.0;
 }
 
-// The flow's displacement from frame 0 to each frame: per step, the flow at the step's middle
-// turned by flow_turn degrees per unit of time about z, times the step.
-std::vector<Vec3> flow_drift(const DynamicOptions& options, int frames, double dt) {
-    std::vector<Vec3> drift(frames);
+// The far flow's step into each frame: the flow at the step's middle turned by flow_turn
+// degrees per unit of time about z, times the step (index 0 unused).
+std::vector<Vec3> flow_steps(const DynamicOptions& options, int frames, double dt) {
+    std::vector<Vec3> steps(frames);
     for (int f = 1; f < frames; ++f) {
         const double a = options.flow_turn * std::numbers::pi / 180.0 * (f - 0.5) * dt;
         const Vec3& v = options.flow;
-        const Vec3 turned{v.x * std::cos(a) - v.y * std::sin(a), v.x * std::sin(a) + v.y * std::cos(a), v.z};
-        drift[f] = drift[f - 1] + turned * dt;
+        steps[f] = Vec3{v.x * std::cos(a) - v.y * std::sin(a), v.x * std::sin(a) + v.y * std::cos(a), v.z} * dt;
     }
-    return drift;
+    return steps;
 }
 
 std::vector<int> sample_types(const Arrangement& first, const Exemplar& exemplar) {
@@ -114,15 +113,16 @@ int resolve_collisions(AllFrames& out, CollisionStep& collisions, const Domain& 
 }
 
 // One round: search (returning its energy), then the assignment, the domain and the physics
-// sub-step when asked for.
+// sub-step when asked for, and the drift along the new paths.
 double search_and_assign(const InputFrames& input, AllFrames& out, const StParams& params, SearchSettings& settings,
                          std::vector<SearchScratch>& scratch, const Domain& domain, const DynamicOptions& options,
-                         CollisionStep* collisions) {
+                         const ObstacleFlow& flow, CollisionStep* collisions) {
     out.index_frames(options.threads);
     const double energy = search_all_frames(input, out, params, settings, scratch, options.threads);
     assign_all_frames(out, params.radius, params, options.threads);
     for (Vec3& p : out.positions()) keep_inside_domain(p, domain, options.wrap);
     if (collisions) resolve_collisions(out, *collisions, domain, options.wrap);
+    if (!flow.uniform()) out.carry(flow, options.threads);
     return energy;
 }
 
@@ -148,10 +148,12 @@ AnimatedArrangement synthesize_all_frames(const Animation& given, const Domain& 
     const Arrangement first = copy_first_frame(exemplar, domain, options, params, params.ahead, source);
     AllFrames out(frames, sample_types(first, exemplar.structure), options.matches, params,
                   periodic_of(domain, options.wrap));
-    out.drift() = flow_drift(options, frames, dt);
+    out.flow_steps() = flow_steps(options, frames, dt);
+    // The flow round the domain's obstacles (the potential flow frame by frame uses too).
+    const ObstacleFlow flow(domain, options.threads, squared_norm(options.flow) > 0.0);
     std::vector<Vec3> first_positions(first.samples.size());
     for (size_t s = 0; s < first_positions.size(); ++s) first_positions[s] = first.samples[s].p;
-    copy_trajectories(exemplar, input, first_positions, source, params.ahead, domain, options.wrap, out,
+    copy_trajectories(exemplar, input, first_positions, source, params.ahead, domain, flow, options.wrap, out,
                       options.threads);
     std::optional<CollisionStep> collisions;  // the physics sub-step, when asked for
     if (options.physics) {
@@ -173,7 +175,7 @@ AnimatedArrangement synthesize_all_frames(const Animation& given, const Domain& 
     for (int round = 0; round < options.iterations; ++round) {
         const double round_start = elapsed();
         settings.round = round;
-        const double energy = search_and_assign(input, out, params, settings, scratch, domain, options,
+        const double energy = search_and_assign(input, out, params, settings, scratch, domain, options, flow,
                                                 collisions ? &*collisions : nullptr);
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - round_start);
