@@ -71,11 +71,11 @@ struct DynamicOptions {
     // domain's bounding box (periodic: a steady flow keeps the domain filled); off = it is put
     // back at the nearest point inside.
     bool wrap = false;
-    // Physics sub-step (section 4.4, Figure 5; frame by frame only): after each frame's
-    // advection, and again after its last assignment, the particles go through a Bullet
-    // step, as spheres of half the exemplar's closest-pair distance without gravity, which
-    // pushes apart the ones that collided and out of the domain's obstacles the ones that
-    // went into them.
+    // Physics sub-step (section 4.4, Figure 5): frame by frame after each frame's advection,
+    // and again after its last assignment (all frames together: on every frame after each
+    // round's assignment), the particles go through a Bullet step, as spheres of half the
+    // exemplar's closest-pair distance without gravity, which pushes apart the ones that
+    // collided and out of the domain's obstacles the ones that went into them.
     bool physics = false;
     // Graph synthesis (section 4.3, tessera/graph_motion.hpp): motion for a still. -1 =
     // automatic (a one-frame exemplar is enriched to 24 frames), 0 = off, N >= 2 = the
@@ -88,6 +88,10 @@ struct DynamicOptions {
     int topology_size = 7;
     int split_samples = 3;
     int split_frames = 2;
+    // Weight of each sample of another element in a thread's or sheet's neighbourhood (the
+    // Hungarian part beside the grid part: its detail relative to the centre's, paired by
+    // place), against a grid entry's 1; 0 = the grid part alone.
+    double cross_weight = 1.0;
     // Worker threads; 0 = all hardware threads. Results are byte-identical for every value.
     int threads = 0;
     // Seed of every random draw (counter-based, keyed by frame and world position).

@@ -29,20 +29,29 @@ struct DetailField {
     bool valid(int f, int s) const { return s >= 0 && f >= 0 && f < frames; }
 };
 
-// The N best input matches of every output sample-frame, as input ids g * samples + j.
+// The N best input matches of every output sample-frame, as input ids g * samples + j, and
+// for each match the input sample paired with each of the sample-frame's cross entries
+// (cross_neighbours.hpp; -1 = unpaired; kept only when the cross term is on).
 struct DetailMatches {
+    static constexpr int kCross = 6;  // CrossNeighbours::kMax
     DetailMatches(int count, int n_) : n(n_), id(static_cast<size_t>(count) * n_, -1), cost(id.size(), 0.0) {}
     int n;
     std::vector<int> id;
     std::vector<double> cost;
+    std::vector<int> partner;
+    int* partners(int k, int q) { return partner.data() + (static_cast<size_t>(k) * n + q) * kCross; }
+    const int* partners(int k, int q) const { return partner.data() + (static_cast<size_t>(k) * n + q) * kCross; }
     int* of(int k) { return id.data() + static_cast<size_t>(k) * n; }
     const int* of(int k) const { return id.data() + static_cast<size_t>(k) * n; }
     double* cost_of(int k) { return cost.data() + static_cast<size_t>(k) * n; }
     const double* cost_of(int k) const { return cost.data() + static_cast<size_t>(k) * n; }
 };
 
+struct CrossTerm;
+
 struct DetailSearch {
     const std::vector<std::vector<GridOffset>>* offsets = nullptr;  // by exemplar type
+    const CrossTerm* cross = nullptr;  // the neighbours of other elements, when on
     double cap2 = 1.0;          // cost of an entry present on one side only (a thread's end)
     bool exhaustive = false;
     int random_candidates = 2;
@@ -65,7 +74,10 @@ double search_details(const DetailField& in, const DetailField& out, const Detai
 // The assignment step (Eq. 6-7 with Eq. 11-12): each detail becomes the weighted mean of
 // the predictions of every matched neighbourhood that covers it, the neighbourhood centres
 // held fixed (Jacobi); reads `out`, returns the new details.
+// With `cross`, each matched neighbourhood also predicts the details of its paired cross
+// entries: the neighbour's detail is the centre's plus the input pair's relative detail.
 std::vector<Vec3> assign_details(const DetailField& in, const DetailField& out, const DetailMatches& matches,
-                                 const std::vector<std::vector<GridOffset>>& offsets, int threads);
+                                 const std::vector<std::vector<GridOffset>>& offsets, int threads,
+                                 const CrossTerm* cross = nullptr);
 
 }  // namespace tessera::dynamic

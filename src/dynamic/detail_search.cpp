@@ -4,6 +4,7 @@
 
 #include "core/parallel.hpp"
 #include "core/rng.hpp"
+#include "dynamic/cross_neighbours.hpp"
 #include "dynamic/detail_field.hpp"
 
 namespace tessera::dynamic {
@@ -28,6 +29,7 @@ namespace {
 
 struct Scratch {
     std::vector<int> candidates;
+    CrossScratch cross;
 };
 
 // Candidates of k-coherence search (Tong et al. 2002) on the grid: a neighbour (s', f + dt)
@@ -84,14 +86,26 @@ double search_one(const DetailField& in, const DetailField& out, const std::vect
     double* cost = next.cost_of(k);
     std::fill(best, best + next.n, -1);
     std::fill(cost, cost + next.n, std::numeric_limits<double>::infinity());
+    const bool cross = settings.cross && settings.cross->active();
     for (int c : cand) {
-        const double d = detail_distance(out, f, s, in, c / in.samples, c % in.samples, offsets, settings.cap2,
-                                         cost[next.n - 1]);
+        double d = detail_distance(out, f, s, in, c / in.samples, c % in.samples, offsets, settings.cap2,
+                                   cost[next.n - 1]);
+        if (cross && d < cost[next.n - 1])
+            d += cross_distance(*settings.cross, out, f, s, in, c / in.samples, c % in.samples, settings.cap2,
+                                scratch.cross);
         if (!(d < cost[next.n - 1])) continue;  // ids ascend, so an equal cost keeps the earlier id
         int slot = next.n - 1;
         for (; slot > 0 && d < cost[slot - 1]; --slot) best[slot] = best[slot - 1], cost[slot] = cost[slot - 1];
         best[slot] = c, cost[slot] = d;
     }
+    if (cross)  // the pairs of the matches kept, for the assignment
+        for (int q = 0; q < next.n; ++q) {
+            int* partner = next.partners(k, q);
+            std::fill(partner, partner + DetailMatches::kCross, -1);
+            if (best[q] >= 0)
+                cross_distance(*settings.cross, out, f, s, in, best[q] / in.samples, best[q] % in.samples,
+                               settings.cap2, scratch.cross, partner);
+        }
     return best[0] >= 0 ? cost[0] : 0.0;
 }
 
@@ -102,6 +116,7 @@ double search_details(const DetailField& in, const DetailField& out, const Detai
     std::vector<std::vector<int>> of_type(settings.offsets->size());
     for (int j = 0; j < in.samples; ++j) of_type[in.type[j]].push_back(j);
     const int n = out.frames * out.samples;
+    if (settings.cross && settings.cross->active()) next.partner.resize(next.id.size() * DetailMatches::kCross);
     std::vector<Scratch> scratch(core::resolve_threads(threads));
     std::vector<double> energy(n, 0.0);
     core::parallel_for(

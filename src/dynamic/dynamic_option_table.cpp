@@ -102,6 +102,11 @@ void add_coarse_rows(OptionTable<O>& t) {
     t.push_back(integer_row<O>("split_frames",
                                "On a coarse motion: half-width in frames of that filter.",
                                [](auto& o) -> auto& { return o.split_frames; }, between(0, 64)));
+    t.push_back(number_row<O>("cross_weight",
+                              "On a coarse motion: weight of each sample of another element in a thread's or "
+                              "sheet's neighbourhood (its detail relative to the centre's, paired by place with the "
+                              "Hungarian algorithm), against a grid entry's 1; 0 = the grid part alone.",
+                              [](auto& o) -> auto& { return o.cross_weight; }, at_least(0)));
 }
 
 OptionTable<O> make_table() {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/parallel.hpp"
+#include "dynamic/cross_neighbours.hpp"
 #include "dynamic/detail_field.hpp"
 #include "dynamic/detail_patches.hpp"
 #include "dynamic/element_contacts.hpp"
@@ -82,11 +83,10 @@ std::vector<int> identity_map(size_t n) {
     return map;
 }
 
-// The exemplar's details in its own coarse motion's local frames.
-DetailField exemplar_details(const MotionSplit& split, const TopologyGrid& grid) {
+// The exemplar's details in its own coarse motion's local frames (`frames`).
+DetailField exemplar_details(const MotionSplit& split, const TopologyGrid& grid, const std::vector<LocalFrame>& frames) {
     const Animation& c = split.coarse;
     DetailField in(grid, c.frame_count(), sample_types(c.structure, identity_map(c.structure.types.size())));
-    const std::vector<LocalFrame> frames = local_frames(c, grid);
     for (size_t k = 0; k < in.detail.size(); ++k) in.detail[k] = frames[k].to_local(split.detail.positions[k]);
     return in;
 }
@@ -188,16 +188,28 @@ AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animat
     split_options.threads = options.threads;
     const MotionSplit split = decompose_motion(exemplar, split_options);
     const TopologyGrid in_grid(exemplar.structure, "exemplar"), out_grid(coarse.structure, "coarse");
-    const DetailField in = exemplar_details(split, in_grid);
+    const std::vector<LocalFrame> in_frames = local_frames(split.coarse, in_grid);
+    const DetailField in = exemplar_details(split, in_grid, in_frames);
     DetailField out(out_grid, coarse.frame_count(), sample_types(coarse.structure, type_map));
     const std::vector<LocalFrame> frames = local_frames(coarse, out_grid);
+    // The neighbours of other elements (the Hungarian part), within the exemplar's reach.
+    const int dimension = coarse.structure.dimension;
+    const std::vector<int> in_elements = element_of_samples(exemplar.structure);
+    const double reach = options.cross_weight > 0.0
+                             ? cross_radius(split.coarse.positions, in_elements, exemplar.frame_count(), dimension)
+                             : 0.0;
+    const CrossNeighbours in_cross(split.coarse.positions, in_frames, in_elements, exemplar.frame_count(), reach,
+                                   dimension, options.threads);
+    const CrossNeighbours out_cross(coarse.positions, frames, element_of_samples(coarse.structure),
+                                    coarse.frame_count(), reach, dimension, options.threads);
+    const CrossTerm cross{&out_cross, &in_cross, &frames, &in_frames, reach > 0.0 ? options.cross_weight : 0.0};
     const std::vector<std::vector<GridOffset>> offsets = offsets_by_type(exemplar.structure, options);
     const auto edges = element_edges(out_grid, element_types(coarse.structure, type_map), coarse.positions.data(),
                                      stretch_by_type(exemplar, split, in_grid));
 
     DetailMatches matches(out.frames * out.samples, options.matches), next = matches;
     copy_patches(in, out, matches, options.temporal_size, options.seed, options.threads);
-    DetailSearch search{&offsets, unpaired_cost(in), options.search == SearchMode::exhaustive,
+    DetailSearch search{&offsets, &cross, unpaired_cost(in), options.search == SearchMode::exhaustive,
                         options.random_candidates, options.seed, 0};
     AnimatedArrangement result;
     result.stats.method = "dynamic";
@@ -220,7 +232,7 @@ AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animat
         search.round = round;
         const double energy = search_details(in, out, search, matches, next, options.threads);
         std::swap(matches, next);
-        out.detail = assign_details(in, out, matches, offsets, options.threads);
+        out.detail = assign_details(in, out, matches, offsets, options.threads, &cross);
         positions = compose(coarse, frames, out);
         constraints.apply(positions, lengths, contacts);
         decompose_into(coarse, frames, positions, out);

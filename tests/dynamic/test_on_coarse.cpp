@@ -1,11 +1,14 @@
 // All-frame synthesis on a coarse motion (synthesize_on_coarse): noodles follow their coarse
 // swing and keep their sample spacing, and their details do not bend them into each other;
 // paper sheets keep their grid (no flipped quad) and
-// their edge lengths; the exemplar's detail is carried over; determinism; bad input.
+// their edge lengths; the exemplar's detail is carried over; neighbouring threads keep the
+// exemplar's relation between their kinks (the cross part of the neighbourhoods);
+// determinism; bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "tessera/animation_io.hpp"
@@ -49,6 +52,81 @@ DynamicOptions options(int threads = 2) {
     o.seed = 3;
     o.threads = threads;
     return o;
+}
+
+// `count` vertical threads of 16 samples, 1.2 apart, over 40 frames, each with a kink running
+// along it in time; thread n's kink is shifted by n x `phase_step` (pi: each thread's kinks
+// mirror its neighbours'). With `amplitude` 0 the threads are straight and still (a coarse
+// motion).
+Animation parallel_threads(int count, double amplitude, double phase_step) {
+    Exemplar ex;
+    ex.dimension = 2;
+    const int type = ex.type_index("noodle");
+    ex.types[type].topology = ElementTopology::thread;
+    ex.types[type].rigid = false;
+    auto place = [&](int n, int i, int f) {
+        const double kink = amplitude * std::sin(2 * std::numbers::pi * (i / 5.0 + f * 0.1 / 1.6) + n * phase_step);
+        return Vec3{1.0 + 1.2 * n + kink, 4.5 - 0.25 * i, 0};
+    };
+    for (int n = 0; n < count; ++n) {
+        std::vector<Vec3> samples;
+        for (int i = 0; i < 16; ++i) samples.push_back(place(n, i, 0));
+        ex.elements[ex.add_element(type, samples)].id = n;
+    }
+    ex.domain = Domain::box({0, 0, 0}, {1.2 * count + 1, 5, 0}, 2);
+    Animation a;
+    a.structure = ex;
+    for (int f = 0; f < 40; ++f) {
+        std::vector<Vec3> p;
+        for (int n = 0; n < count; ++n)
+            for (int i = 0; i < 16; ++i) p.push_back(place(n, i, f));
+        a.add_frame(0.1 * f, p);
+    }
+    return a;
+}
+
+// Mean over pairs of neighbouring threads of the correlation of their x offsets from their
+// own mean place, over every sample and frame.
+double neighbour_correlation(const Animation& a) {
+    const int threads = static_cast<int>(a.structure.elements.size());
+    std::vector<std::vector<double>> x(threads);
+    for (int n = 0; n < threads; ++n) {
+        const Element& e = a.structure.elements[n];
+        double mean = 0.0;
+        for (int f = 0; f < a.frame_count(); ++f)
+            for (int k = 0; k < e.sample_count; ++k) x[n].push_back(a.at(f, e.first_sample + k).x), mean += x[n].back();
+        mean /= x[n].size();
+        for (double& v : x[n]) v -= mean;
+    }
+    double sum = 0.0;
+    for (int n = 0; n + 1 < threads; ++n) {
+        double ab = 0.0, aa = 0.0, bb = 0.0;
+        for (size_t k = 0; k < x[n].size(); ++k) ab += x[n][k] * x[n + 1][k], aa += x[n][k] * x[n][k], bb += x[n + 1][k] * x[n + 1][k];
+        sum += ab / std::sqrt(aa * bb);
+    }
+    return sum / (threads - 1);
+}
+
+// The grid part of a neighbourhood matches each thread's detail within the thread: patches of
+// exemplar threads copied side by side keep their kinks, but not how the kinks of
+// neighbouring threads go together. The cross part does: in an exemplar whose neighbouring
+// threads kink in mirror image (correlation -1), the output's neighbours come out at -0.61 to
+// -0.69 for seeds 1 to 3 (-0.95 with 16 iterations) against -0.34 to 0.16 without it.
+TEST(DynamicOnCoarse, NeighbouringThreadsKeepHowTheirKinksGoTogether) {
+    const Animation exemplar = parallel_threads(6, 0.08, std::numbers::pi), coarse = parallel_threads(12, 0.0, 0.0);
+    ASSERT_LT(neighbour_correlation(exemplar), -0.99);
+    DynamicOptions o = options();
+    double with_mean = 0.0, grid_mean = 0.0;
+    for (std::uint64_t seed : {1, 2, 3}) {
+        o.seed = seed;
+        o.cross_weight = 1.0;
+        const double with_cross = neighbour_correlation(synthesize_on_coarse(exemplar, coarse, o));
+        o.cross_weight = 0.0;
+        const double grid_only = neighbour_correlation(synthesize_on_coarse(exemplar, coarse, o));
+        EXPECT_LT(with_cross, -0.5) << "seed " << seed << ": without the cross part " << grid_only;
+        with_mean += with_cross / 3, grid_mean += grid_only / 3;
+    }
+    EXPECT_LT(with_mean, grid_mean - 0.4) << "with the cross part " << with_mean << ", without " << grid_mean;
 }
 
 TEST(DynamicOnCoarse, NoodlesFollowTheirCoarseSwingAndKeepTheirSpacing) {
