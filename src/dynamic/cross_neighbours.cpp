@@ -78,6 +78,29 @@ Vec3 relative_detail(const DetailField& field, const std::vector<LocalFrame>& fr
     return frames[ka].to_local(frames[kb].to_world(field.detail[kb])) - field.detail[ka];
 }
 
+namespace {
+
+// When every row's cheapest column is its own (no two rows want the same input entry; any
+// number may stay unpaired, each in a dummy column), giving each row its minimum reaches the
+// lower bound of any assignment: it is optimal and the Hungarian algorithm is not needed.
+// Neighbouring samples lie in different directions, so this is the common case. Writes the
+// columns and returns true then.
+bool own_minima_pair(const double* cost, int rows, int real, int cols, int* column) {
+    int dummy = real;
+    for (int r = 0; r < rows; ++r) {
+        const double* row = cost + static_cast<size_t>(r) * cols;
+        int best = real;  // a dummy (they all cost the same for one row)
+        for (int c = 0; c < real; ++c)
+            if (row[c] < row[best == real ? real : best]) best = c;
+        for (int q = 0; q < r; ++q)
+            if (best < real && column[q] == best) return false;
+        column[r] = best < real ? best : dummy++;
+    }
+    return true;
+}
+
+}  // namespace
+
 double cross_distance(const CrossTerm& term, const DetailField& out, int f, int s, const DetailField& in, int g,
                       int j, double cap2, CrossScratch& scratch, int* partner) {
     const int ko = f * out.samples + s, ki = g * in.samples + j;
@@ -97,7 +120,8 @@ double cross_distance(const CrossTerm& term, const DetailField& out, int f, int 
         for (int c = ni; c < cols; ++c) scratch.cost[r * cols + c] = squared_norm(eo[r].place);
     }
     scratch.column.resize(no);
-    core::hungarian(scratch.cost.data(), no, cols, scratch.hungarian, scratch.column.data());
+    if (!own_minima_pair(scratch.cost.data(), no, ni, cols, scratch.column.data()))
+        core::hungarian(scratch.cost.data(), no, cols, scratch.hungarian, scratch.column.data());
     double sum = 0.0;
     int paired = 0;
     for (int r = 0; r < no; ++r) {
