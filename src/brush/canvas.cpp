@@ -149,7 +149,7 @@ int drop_overlaps_between_entries(BrushCanvas::Impl& st) {
     for (int s = 0; s < n; ++s) points[s] = arr.samples[s].p, reach = std::max(reach, st.weight_of_sample(s));
     core::SpatialGrid grid;
     grid.build(points, std::max(2.0 * reach, 1e-6), st.dimension);
-    auto kappa_of = [&](int s) { return st.out_types[arr.elements[arr.samples[s].element].type].kappa; };
+    auto kappa_of = [&](int s) { return st.kappa_of_element(arr.samples[s].element); };
     std::vector<char> remove(arr.elements.size(), 0);
     std::vector<int> near;
     for (int a = 0; a < n; ++a) {

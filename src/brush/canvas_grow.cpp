@@ -54,11 +54,10 @@ Arrangement existing_of_entry(const BrushCanvas::Impl& st, int kappa, const Doma
 // kConflictShareBetweenEntries of their summed weights.
 bool conflicts(const BrushCanvas::Impl& st, const core::SpatialGrid& grid, double reach, const std::vector<Vec3>& points,
                const std::vector<double>& weights, int kappa) {
-    const Arrangement& arr = st.arrangement;
     bool hit = false;
     for (size_t k = 0; k < points.size() && !hit; ++k)
         grid.for_each_within(points[k], weights[k] + reach, [&](int o, double d2) {
-            const bool same_entry = st.out_types[arr.elements[arr.samples[o].element].type].kappa == kappa;
+            const bool same_entry = st.kappa_of_element(st.arrangement.samples[o].element) == kappa;
             const double share = same_entry ? kConflictShare : kConflictShareBetweenEntries;
             const double summed = share * (weights[k] + st.weight_of_sample(o));
             if (d2 < summed * summed) hit = true;
