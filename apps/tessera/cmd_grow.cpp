@@ -145,6 +145,8 @@ void run_grow(GrowArgs& args) {
         if (report.bound_hit) std::cerr << "; stopped by --max-rounds " << args.options.max_rounds;
         if (report.uncovered > 0)
             std::cerr << "; " << report.uncovered << " of them filled in where the horizon stopped";
+        if (report.rare > 0)
+            std::cerr << "; " << report.rare << " of a rare type added where it fell short of its share";
         std::cerr << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview) << std::endl;
     }
 }

@@ -110,6 +110,7 @@ struct GrowReport {
     int displaced = 0;       // recent elements a candidate of a type short of its share replaced
     int filled = 0;          // elements put into enclosed holes behind the horizon
     int uncovered = 0;       // grow(region): elements put where the horizon did not reach
+    int rare = 0;            // grow(region): elements of a rare type put where growth left it short
     int relaxed = 0;         // grow(region): moves the pair-correlation relaxation kept
     bool covered = false;    // grow(region): the region took no more elements
     bool bound_hit = false;  // the round bound (GrowOptions::max_rounds) stopped the call

@@ -144,30 +144,6 @@ bool samples_clash(const std::vector<Vec3>& a, const std::vector<Vec3>& b, doubl
     return false;
 }
 
-// Removes the displaced elements (all at or after g.recent_first) and renumbers what
-// refers to the elements after them: the horizon and the rounds' first indices.
-void remove_displaced(Grower::Impl& g, const std::vector<char>& displaced) {
-    const int base = g.recent_first;
-    std::vector<int> renumber(displaced.size(), -1);
-    int next = base;
-    for (size_t k = 0; k < displaced.size(); ++k)
-        if (!displaced[k]) renumber[k] = next++;
-    auto map = [&](int i) { return i < base ? i : renumber[i - base]; };
-    std::vector<char> keep(displaced.size());
-    for (size_t k = 0; k < keep.size(); ++k) keep[k] = !displaced[k];
-    g.drop_tail(base, keep);
-    std::vector<int> horizon;
-    for (const int h : g.horizon)
-        if (map(h) >= 0) horizon.push_back(map(h));
-    g.horizon = std::move(horizon);
-    for (int& first : g.round_first) {
-        if (first < base) continue;
-        int k = first - base;
-        while (k < static_cast<int>(displaced.size()) && displaced[k]) ++k;
-        first = k < static_cast<int>(displaced.size()) ? renumber[k] : next;
-    }
-}
-
 }  // namespace
 
 TypeBalance::TypeBalance(const Grower::Impl& g)
@@ -488,7 +464,7 @@ int drop_overlapping(Grower::Impl& g, std::vector<Candidate>& candidates, double
     }
     const int dropped = static_cast<int>(candidates.size() - kept.size());
     candidates = std::move(kept);
-    if (std::find(displaced.begin(), displaced.end(), 1) != displaced.end()) remove_displaced(g, displaced);
+    if (std::find(displaced.begin(), displaced.end(), 1) != displaced.end()) g.remove_and_renumber(g.recent_first, displaced);
     return dropped;
 }
 

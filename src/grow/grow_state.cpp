@@ -192,6 +192,27 @@ void Grower::Impl::drop_tail(int first, const std::vector<char>& keep) {
     dirty = true;
 }
 
+void Grower::Impl::remove_and_renumber(int base, const std::vector<char>& removed) {
+    std::vector<int> renumber(removed.size(), -1);
+    int next = base;
+    for (size_t k = 0; k < removed.size(); ++k)
+        if (!removed[k]) renumber[k] = next++;
+    auto map = [&](int i) { return i < base ? i : renumber[i - base]; };
+    std::vector<char> keep(removed.size());
+    for (size_t k = 0; k < keep.size(); ++k) keep[k] = !removed[k];
+    drop_tail(base, keep);
+    std::vector<int> kept_horizon;
+    for (const int h : horizon)
+        if (map(h) >= 0) kept_horizon.push_back(map(h));
+    horizon = std::move(kept_horizon);
+    for (int& first : round_first) {
+        if (first < base) continue;
+        int k = first - base;
+        while (k < static_cast<int>(removed.size()) && removed[k]) ++k;
+        first = k < static_cast<int>(removed.size()) ? renumber[k] : next;
+    }
+}
+
 void Grower::Impl::register_layer_of_elements() {
     layer_registered = false;
     int axis = -1;

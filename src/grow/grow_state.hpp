@@ -230,6 +230,9 @@ struct Grower::Impl {
     void move(int i, const Vec3& p);
     // Removes the elements from index `first` on whose `keep` is 0 (they are the newest).
     void drop_tail(int first, const std::vector<char>& keep);
+    // Removes the elements from index `base` on whose `removed` is 1 and renumbers what refers
+    // to the elements after them: the horizon and the rounds' first indices.
+    void remove_and_renumber(int base, const std::vector<char>& removed);
     // Sample positions of an element centred at p: the samples of existing element `kept`
     // (when >= 0), else input element `source`'s layout turned by `frame`.
     void sample_positions(int kept, int source, const Quat& frame, const Vec3& p,

@@ -432,10 +432,11 @@ int lipid_heads_off_their_planes(const Exemplar& ex, const Arrangement& out) {
 // copied lipid to lipid drifted, and membranes grew stacked and crowded). Before, only the
 // exemplar's central channel had a whole patch, and every seed grew the same membrane.
 // The channel proteins (3 of its 177 elements, each spanning both leaflets) are proposed
-// where patches meet misaligned lipids and must be moved out of their samples to find a
-// place: without that they grew at 44% of their share; the bar for a rare class (within
-// 20%) is not met yet (55% to 76%), this holds the gain.
-TEST(Grow, EverySeedGrowsAWholeMembraneWithMostOfItsChannelProteins) {
+// only where a match's patch holds one, and mostly land on lipids other patches put there:
+// the rounds alone grew 55% to 76% of their share. A rare type short of its share is
+// completed once the region is covered (grow/rare_types.hpp), each channel taking the place
+// of the lipids it overlaps and the ring around it grown again: within 20% for every seed.
+TEST(Grow, EverySeedGrowsAWholeMembraneWithItsChannelProteinsShare) {
     const Exemplar ex = example("membrane_3d");
     const Box b = ex.domain.bounds();
     const Domain region = Domain::box(b.lo, b.lo + Vec3{3 * b.size().x, 3 * b.size().y, b.size().z}, 3);
@@ -443,7 +444,6 @@ TEST(Grow, EverySeedGrowsAWholeMembraneWithMostOfItsChannelProteins) {
     auto count = [](const std::vector<Element>& elements, int type) {
         return static_cast<double>(std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return e.type == type; }));
     };
-    double channel_share = 0.0;
     std::set<size_t> sizes;
     for (const std::uint64_t seed : {1, 2, 3}) {
         GrowOptions o;
@@ -455,10 +455,10 @@ TEST(Grow, EverySeedGrowsAWholeMembraneWithMostOfItsChannelProteins) {
         EXPECT_EQ(lipid_heads_off_their_planes(ex, out), 0) << "seed " << seed;
         for (const Sample& s : out.samples) EXPECT_TRUE(region.inside(s.p));
         expect_no_crowding(ex, out, "membrane");
-        channel_share += count(out.elements, channel) / out.elements.size() / 3.0;
+        const double want = count(ex.elements, channel) / ex.elements.size();
+        EXPECT_NEAR(count(out.elements, channel) / out.elements.size(), want, 0.2 * want) << "seed " << seed;
     }
     EXPECT_EQ(sizes.size(), 3u) << "the seeds grew the same membrane";
-    EXPECT_GT(channel_share, 0.6 * count(ex.elements, channel) / ex.elements.size());
 }
 
 // Growth next to an existing membrane (a later call, a world's later tile) finds the
