@@ -97,6 +97,22 @@ TEST(Grow, TwoClassStripesKeepTheirSharesAndTheRegion) {
     EXPECT_GE(inside_fraction(out), 0.995);
 }
 
+// Disks of three sizes, the large ones 80 times the small ones' radius: the small disks'
+// closest pair lies at 0.80 of their typical distance, and their hard core, which packs a
+// fifth of the plane, does not hold their density. Taken as hard, patches copied at
+// misaligned offsets packed them between each other: 1.5x their density, the output 1.39x.
+TEST(Grow, DisksOfWidelyDifferentSizesKeepTheirDensityAndShares) {
+    const Exemplar ex = example("pcf/wide_radii");
+    const Domain region = ex.domain.scaled(3.0);
+    const Arrangement out = grown(ex, region);
+    const double want = ex.elements.size() / ex.domain.measure(), got = out.elements.size() / region.measure();
+    EXPECT_NEAR(got, want, 0.1 * want);
+    const std::vector<double> want_share = type_shares(ex.elements, 3), got_share = type_shares(out.elements, 3);
+    for (int t = 0; t < 3; ++t)
+        EXPECT_NEAR(got_share[t], want_share[t], 0.15 * want_share[t]) << ex.types[t].name;
+    expect_no_crowding(ex, out, "wide radii");
+}
+
 TEST(Grow, ARareClassKeepsItsShareWithinTwentyPercent) {
     const Exemplar ex = rare_class_exemplar();
     const double want = type_shares(ex.elements, 2)[1];
