@@ -147,6 +147,8 @@ void run_grow(GrowArgs& args) {
             std::cerr << "; " << report.uncovered << " of them filled in where the horizon stopped";
         if (report.rare > 0)
             std::cerr << "; " << report.rare << " of a rare type added where it fell short of its share";
+        if (report.thinned > 0)
+            std::cerr << "; " << report.thinned << " removed where the region held more than the exemplar's density";
         std::cerr << "; wrote " << args.output << (args.preview.empty() ? "" : " and " + args.preview) << std::endl;
     }
 }

@@ -111,6 +111,7 @@ struct GrowReport {
     int filled = 0;          // elements put into enclosed holes behind the horizon
     int uncovered = 0;       // grow(region): elements put where the horizon did not reach
     int rare = 0;            // grow(region): elements of a rare type put where growth left it short
+    int thinned = 0;         // grow(region): removed where the region held more than its density asks
     int relaxed = 0;         // grow(region): moves the pair-correlation relaxation kept
     bool covered = false;    // grow(region): the region took no more elements
     bool bound_hit = false;  // the round bound (GrowOptions::max_rounds) stopped the call

@@ -34,7 +34,7 @@ py::dict report_of(const tessera::GrowReport& r) {
     py::dict d;
     d["rounds"] = r.rounds, d["added"] = r.added, d["candidates"] = r.candidates, d["merged"] = r.merged;
     d["high_energy"] = r.high_energy, d["outside"] = r.outside, d["reassigned"] = r.reassigned;
-    d["last_made"] = r.last_made, d["displaced"] = r.displaced, d["filled"] = r.filled, d["uncovered"] = r.uncovered, d["rare"] = r.rare, d["relaxed"] = r.relaxed, d["covered"] = r.covered;
+    d["last_made"] = r.last_made, d["displaced"] = r.displaced, d["filled"] = r.filled, d["uncovered"] = r.uncovered, d["rare"] = r.rare, d["thinned"] = r.thinned, d["relaxed"] = r.relaxed, d["covered"] = r.covered;
     d["bound_hit"] = r.bound_hit, d["energy"] = r.energy, d["seconds"] = r.seconds;
     return d;
 }

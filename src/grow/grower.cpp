@@ -8,6 +8,7 @@
 #include "grow/grow_state.hpp"
 #include "grow/rare_types.hpp"
 #include "grow/round.hpp"
+#include "grow/thinning.hpp"
 #include "grow/relax.hpp"
 #include "grow/uncovered.hpp"
 #include "grow/vacancies.hpp"
@@ -305,6 +306,23 @@ void complete_rare_types(Grower::Impl& g, const Domain& region, int start, GrowR
 
 }  // namespace
 
+namespace {
+
+// The surplus of a covered region removed (grow/thinning.hpp), last, so that nothing after
+// it adds elements back; the holes it may still open (its test of each removal follows one
+// local maximum of the clearance) go through the covered-hole fill again.
+void thin_to_density(Grower::Impl& g, const Domain& region, int start, GrowReport& report) {
+    const int thinned = grow::thin_to_density(g, start, region);
+    report.thinned += thinned;
+    report.added -= thinned;
+    if (thinned == 0) return;
+    const int filled = grow::fill_covered_holes(g, start, static_cast<int>(g.out.size()), region);
+    report.filled += filled;
+    report.added += filled;
+}
+
+}  // namespace
+
 GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
     Impl& g = *impl_;
     struct OpenFor {  // the edge rule holds for this call only, also when it throws
@@ -375,6 +393,7 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         report.filled += filled;
         report.added += filled;
     }
+    if (report.covered) thin_to_density(g, region, static_cast<int>(start), report);
     report.seconds = std::chrono::duration<double>(Clock::now() - g.t0).count();
     report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
     g.last_report = report;

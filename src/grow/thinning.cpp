@@ -1,0 +1,167 @@
+// A covered region thinned back to the exemplar's density (grow/thinning.hpp).
+#include "grow/thinning.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <queue>
+
+namespace tessera::grow {
+
+namespace {
+
+// The crowding disk (ball): this many mean spacings, as the count ceiling's.
+constexpr double kRadius = 4.0;
+// The surplus a region may keep: this share of its expected count plus kDeviations times
+// the count's Poisson deviation (a pattern's own fluctuation at the region's size).
+constexpr double kTolerance = 0.02;
+constexpr double kDeviations = 2.0;
+// Points per axis of the lattice that measures the share of a disk inside the region.
+constexpr int kLattice = 8;
+// The hole the covered-hole fill puts an element in: deeper than this times the exemplar's
+// largest (grow/vacancies.cpp).
+constexpr double kCoveredDepth = 1.25;
+// The pattern search for the hole a removal leaves: at most this many steps, until the step
+// is under this share of the exemplar's largest hole.
+constexpr int kSearchSteps = 40;
+constexpr double kSearchEnd = 0.02;
+
+std::vector<Vec3> unit_ball_lattice(int dimension) {
+    std::vector<Vec3> points;
+    const int nz = dimension == 3 ? kLattice : 1;
+    for (int i = 0; i < kLattice; ++i)
+        for (int j = 0; j < kLattice; ++j)
+            for (int k = 0; k < nz; ++k) {
+                const Vec3 p{(i + 0.5) / kLattice * 2 - 1, (j + 0.5) / kLattice * 2 - 1,
+                             dimension == 3 ? (k + 0.5) / kLattice * 2 - 1 : 0.0};
+                if (dot(p, p) <= 1.0) points.push_back(p);
+            }
+    return points;
+}
+
+// The elements whose centre lies in the region, flagged per element of g.out.
+std::vector<int> elements_in(const Grower::Impl& g, const Domain& region, std::vector<char>& in_region) {
+    const Box& b = region.bounds();
+    Vec3 half = (b.hi - b.lo) * 0.5;
+    if (g.metric.dimension == 2) half.z = 0.0;
+    std::vector<int> near, inside;
+    g.grid.query(
+        b.center(), norm(half) + 1e-9, [&](int i) { return g.out[i].p; }, near);
+    in_region.assign(g.out.size(), 0);
+    for (const int i : near)
+        if (region.inside(g.out[i].p)) in_region[i] = 1, inside.push_back(i);
+    std::sort(inside.begin(), inside.end());
+    return inside;
+}
+
+double rim_of(const Grower::Impl& g, int j) {
+    const OutElement& o = g.out[j];
+    return o.kept >= 0 ? g.existing.elements[o.kept].radius : g.exemplar.elements[o.source].radius;
+}
+
+// Whether removing element i (and those `gone` says) would open a hole the covered-hole fill
+// (grow/vacancies.hpp) puts an element back in: from i's place, a pattern search climbs the
+// rim-to-rim clearance to the centre of the hole i leaves, and that hole is deeper than
+// kCoveredDepth times the exemplar's largest. Removing an element of an even pattern's
+// lattice opens one (cells: a hole 1.6x the exemplar's); one of a pair squeezed together
+// does not.
+template <class Gone>
+bool opens_hole(const Grower::Impl& g, int i, double max_rim, const Gone& gone) {
+    const double depth = kCoveredDepth * g.hole_radius;
+    const int d = g.metric.dimension;
+    auto clearance = [&](const Vec3& c) {
+        double best = depth + 1.0;
+        g.grid.for_each_within(
+            c, depth + 1.0 + max_rim, [&](int j) { return g.out[j].p; }, [&](int j) {
+                if (!gone(j)) best = std::min(best, norm(g.out[j].p - c) - rim_of(g, j));
+            });
+        return best;
+    };
+    Vec3 c = g.out[i].p;
+    double here = clearance(c);
+    double step = 0.5 * g.hole_radius;
+    for (int k = 0; k < kSearchSteps && here <= depth && step > kSearchEnd * g.hole_radius; ++k) {
+        Vec3 best_at = c;
+        double best = here;
+        for (int a = 0; a < (d == 2 ? 8 : 26); ++a) {
+            Vec3 dir = d == 2 ? Vec3{std::cos(a * std::numbers::pi / 4), std::sin(a * std::numbers::pi / 4), 0.0}
+                              : Vec3{(a % 3) - 1.0, ((a / 3) % 3) - 1.0, (a / 9) - 1.0};
+            if (d == 3) {
+                if (a == 13) continue;  // the centre of the 3 x 3 x 3 block
+                dir = dir * (1.0 / norm(dir));
+            }
+            const Vec3 q = c + dir * step;
+            const double there = clearance(q);
+            if (there > best) best = there, best_at = q;
+        }
+        if (best > here)
+            c = best_at, here = best;
+        else
+            step *= 0.5;
+    }
+    return here > depth;
+}
+
+}  // namespace
+
+int thin_to_density(Grower::Impl& g, int first, const Domain& region) {
+    if (!g.fills_holes || g.open_region) return 0;
+    double density = 0.0;
+    for (const double d : g.metric.params.type_density) density += d;
+    if (!(density > 0.0)) return 0;
+    const double expected = density * region.measure();
+    std::vector<char> in_region;
+    const std::vector<int> inside = elements_in(g, region, in_region);
+    const double allowed = expected * (1.0 + kTolerance) + kDeviations * std::sqrt(expected);
+    if (static_cast<double>(inside.size()) <= allowed) return 0;
+    // Per type, the count the region asks for: what is left above it may go.
+    const size_t types = g.exemplar.types.size();
+    std::vector<double> keep(types, 0.0);
+    for (const Element& e : g.exemplar.elements)
+        keep[e.type] += std::round(expected) / static_cast<double>(g.exemplar.elements.size());
+    std::vector<int> count(types, 0);
+    for (const int i : inside) ++count[g.out[i].type];
+    // Edge-corrected counts within R (the disk's share inside the region).
+    const int d = g.metric.dimension;
+    const double radius = kRadius * std::pow(density, -1.0 / d);
+    const std::vector<Vec3> lattice = unit_ball_lattice(d);
+    std::vector<double> crowd(g.out.size(), 0.0), weight(g.out.size(), 0.0);
+    for (const int i : inside) {
+        g.interrupt.check(0);
+        int points = 0;
+        for (const Vec3& u : lattice) points += region.inside(g.out[i].p + u * radius) ? 1 : 0;
+        weight[i] = static_cast<double>(lattice.size()) / std::max(1, points);
+    }
+    auto removable = [&](int i) { return i >= first && !g.out[i].locked; };
+    std::priority_queue<std::pair<double, int>> most_crowded;  // ties: the lower index first
+    for (const int i : inside) {
+        g.grid.for_each_within(
+            g.out[i].p, radius, [&](int j) { return g.out[j].p; },
+            [&](int j) { crowd[i] += j != i && in_region[j] ? weight[i] : 0.0; });
+        if (removable(i)) most_crowded.push({crowd[i], -i});
+    }
+    double max_rim = 0.0;
+    for (const OutElement& o : g.out) max_rim = std::max(max_rim, rim_of(g, static_cast<int>(&o - g.out.data())));
+    std::vector<char> removed(g.out.size() - first, 0);
+    const int surplus = static_cast<int>(inside.size() - std::lround(expected));
+    int gone = 0;
+    while (gone < surplus && !most_crowded.empty()) {
+        const auto [c, minus_i] = most_crowded.top();
+        most_crowded.pop();
+        const int i = -minus_i;
+        if (c != crowd[i] || removed[i - first] || !(count[g.out[i].type] > keep[g.out[i].type])) continue;
+        if (opens_hole(g, i, max_rim, [&](int j) { return j == i || (removable(j) && removed[j - first]); })) continue;
+        removed[i - first] = 1;
+        --count[g.out[i].type];
+        ++gone;
+        g.grid.for_each_within(
+            g.out[i].p, radius, [&](int j) { return g.out[j].p; }, [&](int j) {
+                if (j == i || !in_region[j] || (removable(j) && removed[j - first])) return;
+                crowd[j] -= weight[j];
+                if (removable(j)) most_crowded.push({crowd[j], -j});
+            });
+    }
+    if (gone > 0) g.remove_and_renumber(first, removed);
+    return gone;
+}
+
+}  // namespace tessera::grow
