@@ -69,11 +69,46 @@ void gather_candidates(const InputFrames& input, const OutputFrames& output, int
     out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
+// A point as the domain sees it: with `wrap`, folded into the bounding box first.
+Vec3 folded(const Vec3& p, const SearchSettings& settings, int dimension) {
+    if (!settings.wrap) return p;
+    const Box& b = settings.domain->bounds();
+    Vec3 q = p;
+    for (int k = 0; k < dimension; ++k) {
+        const double extent = b.hi[k] - b.lo[k];
+        q[k] -= std::floor((q[k] - b.lo[k]) / extent) * extent;
+    }
+    return q;
+}
+
+// lambda * Eq. 6 for input candidate id at the output sample's place p: its spatial
+// neighbours (within r) that would lie outside the domain, each costing 1 (boxes and
+// polygons are sharp; masks and meshes give their occupancy).
+double occupancy_cost(const InputFrames& input, int id, const Vec3& p, const StParams& params,
+                      const SearchSettings& settings) {
+    const StEntry* in = input.entries(id);
+    const int* start = input.group_start(id);
+    const double r2 = params.radius * params.radius;
+    double sum = 0.0;
+    for (int e = start[0]; e < start[1]; ++e) {
+        if (squared_norm(in[e].offset) > r2) continue;
+        const double c = settings.domain->occupancy(folded(p + in[e].offset, settings, params.dimension));
+        sum += (1.0 - c) * (1.0 - c);
+    }
+    return settings.lambda * sum;
+}
+
 double search_sample(const InputFrames& input, OutputFrames& output, int s, const StParams& params,
                      const SearchSettings& settings, SearchScratch& scratch) {
     output.gather(s, scratch.neighbourhood);
     gather_candidates(input, output, s, params, settings, scratch);
-    return match_and_predict(input, output, s, params, scratch);
+    const Vec3 p = output.current()[s];
+    // The term vanishes where the disk of radius r round the sample lies inside.
+    const bool near_wall = settings.domain && settings.lambda > 0.0 &&
+                           settings.domain->distance_to_boundary(folded(p, settings, params.dimension)) < params.radius;
+    if (!near_wall) return match_and_predict(input, output, s, params, scratch);
+    return match_and_predict(input, output, s, params, scratch,
+                             [&](int id) { return occupancy_cost(input, id, p, params, settings); });
 }
 
 }  // namespace

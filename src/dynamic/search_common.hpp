@@ -54,17 +54,20 @@ void write_predictions(const InputFrames& input, Output& output, int i, const St
 // The N best of scratch.candidates for the neighbourhood in scratch.neighbourhood, with
 // their blend weights (Eq. 11-12), and the predictions of output sample i; returns the best
 // distance (0 when no candidate). Each candidate's distance is cut off at the N-th best so far.
-template <class Output>
+// `extra(id)` is added to each candidate's distance (the occupancy term near a wall).
+template <class Output, class Extra>
 double match_and_predict(const InputFrames& input, Output& output, int i, const StParams& params,
-                         SearchScratch& scratch) {
+                         SearchScratch& scratch, const Extra& extra) {
     const int n = output.matches();
     int* best = output.match(i);
     double* dist = output.distance(i);
     int count = 0;
     for (int id : scratch.candidates) {
         const double bound = count < n ? std::numeric_limits<double>::infinity() : dist[n - 1];
-        const double d = st_distance(scratch.neighbourhood, input.entries(id), input.group_start(id), params,
-                                     scratch.metric, nullptr, bound);
+        const double e = extra(id);
+        if (e >= bound) continue;
+        const double d = e + st_distance(scratch.neighbourhood, input.entries(id), input.group_start(id), params,
+                                         scratch.metric, nullptr, bound - e);
         if (d < bound) keep_best(id, d, n, best, dist, count);
     }
     for (int j = count; j < n; ++j) best[j] = -1, dist[j] = 0.0;
@@ -72,6 +75,12 @@ double match_and_predict(const InputFrames& input, Output& output, int i, const 
     for (int j = count; j < n; ++j) output.omega(i)[j] = 0.0;
     write_predictions(input, output, i, params, scratch);
     return count > 0 ? dist[0] : 0.0;
+}
+
+template <class Output>
+double match_and_predict(const InputFrames& input, Output& output, int i, const StParams& params,
+                         SearchScratch& scratch) {
+    return match_and_predict(input, output, i, params, scratch, [](int) { return 0.0; });
 }
 
 }  // namespace tessera::dynamic

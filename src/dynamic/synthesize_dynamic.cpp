@@ -154,6 +154,9 @@ public:
             build_similarity(input_, params, similarity_k, similarity_scan, options.seed, options.threads);
         for (size_t s = 0; s < first.samples.size(); ++s) out_.current()[s] = first.samples[s].p;
         if (options.physics) collisions_.emplace(exemplar, domain, options.wrap);
+        settings_.domain = &domain;
+        settings_.wrap = options.wrap;
+        settings_.lambda = params.spacing * params.spacing;  // as the static method's default
     }
 
     // Frame 0, the static method's arrangement as it is (with physics, its collisions
