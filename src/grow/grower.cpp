@@ -8,6 +8,7 @@
 #include "grow/grow_state.hpp"
 #include "grow/rare_types.hpp"
 #include "grow/round.hpp"
+#include "grow/sample_holes.hpp"
 #include "grow/thinning.hpp"
 #include "grow/relax.hpp"
 #include "grow/uncovered.hpp"
@@ -394,6 +395,11 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
         report.added += filled;
     }
     if (report.covered) thin_to_density(g, region, static_cast<int>(start), report);
+    if (report.covered) {  // grow/sample_holes.hpp
+        const int filled = grow::fill_sample_holes(g, region);
+        report.filled += filled;
+        report.added += filled;
+    }
     report.seconds = std::chrono::duration<double>(Clock::now() - g.t0).count();
     report_progress(g, "done", report.rounds, report.rounds, 1.0, report.energy);
     g.last_report = report;

@@ -365,17 +365,23 @@ TEST(Grow, MultiSampleElementsKeepTheirShapeAndDoNotCross) {
 
 // Deformable noodles of 8 samples, which touch easily where patches meet: a touching
 // candidate takes another noodle's shape that fits, so the density holds (it was 75% when
-// every touching candidate was dropped); no two noodles cross.
-TEST(Grow, NoodlesKeepMostOfTheirDensityWithoutCrossing) {
+// every touching candidate was dropped); no two noodles cross. Where no candidate's shape
+// fitted, a place emptier than the exemplar's largest empty circle (against samples) gets a
+// noodle of a shape that fits it (grow/sample_holes.hpp): such places were 1.7x the
+// exemplar's, now under 1.5x.
+TEST(Grow, NoodlesKeepMostOfTheirDensityWithoutCrossingOrHoles) {
     const Exemplar ex = example("noodles_2d");
     const Box b = ex.domain.bounds();
-    const double s = std::sqrt(10.0);
+    const double s = 5.0;
     const Domain region = Domain::box(b.lo, b.lo + Vec3{s * b.size().x, s * b.size().y, 0}, 2);
-    const Arrangement out = grown(ex, region);
+    Arrangement out = grown(ex, region);
     const double density = out.elements.size() / region.measure(), want = ex.elements.size() / ex.domain.measure();
-    EXPECT_GT(density, 0.82 * want) << out.elements.size() << " noodles";
+    EXPECT_GT(density, 0.84 * want) << out.elements.size() << " noodles";
     expect_no_crowding(ex, out, "noodles");
     EXPECT_GE(inside_fraction(out), 0.995);
+    out.domain = region;
+    const double hole = largest_empty_circle(out).radius, exemplar_hole = largest_empty_circle(ex).radius;
+    EXPECT_LT(hole, 1.5 * exemplar_hole) << "hole " << hole << " vs the exemplar's " << exemplar_hole;
 }
 
 // Rods in a slab fit many orientations: a candidate that touches others takes another rod's
