@@ -153,7 +153,9 @@ private:
 }  // namespace
 
 int fill_sample_holes(Grower::Impl& g, const Domain& region) {
-    if (!g.bounds.has_samples || g.layer_registered || g.out.empty()) return 0;
+    // A world's tile (an open region) is left alone: its faces towards tiles not grown yet
+    // look like holes from inside (filled, single-sample tiles crowded their seams).
+    if (!g.bounds.has_samples || g.layer_registered || g.open_region || g.out.empty()) return 0;
     const double hole = largest_empty_circle(g.exemplar, g.threads).radius;
     if (!(hole > 0.0)) return 0;
     SampleHoles holes(g, region, hole);

@@ -13,7 +13,8 @@
 
 namespace tessera::grow {
 
-// For exemplars of multi-sample elements without a registered layer: probes `region` on a
+// For exemplars of multi-sample elements without a registered layer, in a closed region (not
+// a world's tile): probes `region` on a
 // lattice of half the exemplar's largest empty circle (the largest disk or ball free of
 // samples), and puts an element into each place still emptier than that, its centroid at the
 // place: of the type most short of its share, shaped as one of kShapeTries input elements of
