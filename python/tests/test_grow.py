@@ -41,7 +41,8 @@ def test_growing_a_region_fills_it_and_stays_inside(two_class_file):
 
 def test_report_has_every_count():
     keys = {"rounds", "added", "candidates", "merged", "high_energy", "outside", "reassigned", "last_made",
-            "displaced", "filled", "uncovered", "relaxed", "covered", "bound_hit", "energy", "seconds"}
+            "displaced", "filled", "uncovered", "relaxed", "covered", "bound_hit", "energy", "seconds",
+            "rare", "thinned"}
     ex = tessera.load(ROOT / "examples" / "two_class_2d.json")
     report = tessera.Grower(ex).grow(50)
     assert set(report) == keys
