@@ -154,7 +154,9 @@ public:
             build_similarity(input_, params, similarity_k, similarity_scan, options.seed, options.threads);
         for (size_t s = 0; s < first.samples.size(); ++s) out_.current()[s] = first.samples[s].p;
         if (options.physics) collisions_.emplace(exemplar, domain, options.wrap);
-        settings_.domain = &domain;
+        // A box that wraps has no walls: nothing to weigh, and no point paying the test.
+        const bool walls = !(options.wrap && domain.kind() == Domain::Kind::box);
+        settings_.domain = walls ? &domain : nullptr;
         settings_.wrap = options.wrap;
         settings_.lambda = params.spacing * params.spacing;  // as the static method's default
     }
