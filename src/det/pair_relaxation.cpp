@@ -64,14 +64,22 @@ private:
     std::vector<std::vector<int>> cells_;
 };
 
-// Kernel-smoothed, edge-corrected pair sums of one point set on the relaxation's grid. The
-// Gaussian comes from a table (linear interpolation, within 1e-6 of the exact kernel).
+// Kernel-smoothed, edge-corrected pair sums of one point set on the relaxation's grid. A
+// pair's Gaussian over the bins it touches comes from a recurrence, two products per bin:
+// at the bins' evenly spaced t_k (in bandwidths, delta apart) the kernel is exp(-t_k^2 / 2),
+// with exp(-t_{k+1}^2 / 2) = exp(-t_k^2 / 2) q_k and q_{k+1} = q_k exp(-delta^2). The first
+// bin's t lies in [-kKernelReach, -kKernelReach + delta) unless it is bin 0, so its two
+// starting values come from tables over that interval (linear interpolation, relative error
+// under 1e-7); the exp calls they replace were half of the relaxation's time.
 struct PairSums {
-    static constexpr int kTable = 2048;
+    static constexpr int kTable = 4096;
     int bins = 0;
     double step = 0.0, bandwidth = 0.0;
     const Domain* domain = nullptr;
-    std::vector<double> table;  // exp(-t^2/2) / (sqrt(2 pi) h) for t in [0, kKernelReach]
+    double norm_factor = 0.0;  // 1 / (sqrt(2 pi) h)
+    double delta = 0.0;        // the bins' spacing in bandwidths
+    double q_step = 0.0;       // exp(-delta^2)
+    std::vector<double> start_g, start_q;  // exp(-t^2 / 2), exp(-t delta - delta^2 / 2) at t = -reach + u
 
     bool box = false;            // a box domain: the edge correction in closed form
     Vec3 size;
@@ -79,19 +87,20 @@ struct PairSums {
     int dim = 2;
 
     PairSums(int bins_, double step_, double bandwidth_, const Domain* domain_)
-        : bins(bins_), step(step_), bandwidth(bandwidth_), domain(domain_), table(kTable + 2),
+        : bins(bins_), step(step_), bandwidth(bandwidth_), domain(domain_),
+          norm_factor(1.0 / (std::sqrt(2.0 * kPi) * bandwidth_)), delta(step_ / bandwidth_),
+          q_step(std::exp(-delta * delta)), start_g(kTable + 2), start_q(kTable + 2),
           box(domain_->kind() == Domain::Kind::box), size(domain_->bounds().size()), measure(domain_->measure()),
           dim(domain_->dimension()) {
         for (int i = 0; i <= kTable + 1; ++i) {
-            const double t = kKernelReach * i / kTable;
-            table[i] = std::exp(-0.5 * t * t) / (std::sqrt(2.0 * kPi) * bandwidth);
+            double g = 0.0, q = 0.0;
+            starting_values(-kKernelReach + delta * i / kTable, g, q);
+            start_g[i] = g, start_q[i] = q;
         }
     }
-    double kernel(double t) const {  // |t| in bandwidths
-        const double u = std::abs(t) * (kTable / kKernelReach);
-        const int i = static_cast<int>(u);
-        if (i >= kTable) return 0.0;
-        return table[i] + (u - i) * (table[i + 1] - table[i]);
+    void starting_values(double t, double& g, double& q) const {
+        g = std::exp(-0.5 * t * t);
+        q = std::exp(-t * delta - 0.5 * delta * delta);
     }
     // |W ∩ (W + d)| (the translation edge correction of spatstat's estimator).
     double overlap(const Vec3& d) const {
@@ -106,7 +115,23 @@ struct PairSums {
         const double weight = measure / std::max(overlap(d), 1e-300);
         lo = std::max(0, static_cast<int>(std::ceil((r - kKernelReach * bandwidth) / step)));
         const int hi = std::min(bins - 1, static_cast<int>(std::floor((r + kKernelReach * bandwidth) / step)));
-        for (int k = lo; k <= hi; ++k) values[k - lo] = weight * kernel((k * step - r) / bandwidth);
+        const double t = (lo * step - r) / bandwidth;
+        double g = 0.0, q = 0.0;
+        if (lo == 0) {
+            starting_values(t, g, q);
+        } else {
+            const double u = std::clamp((t + kKernelReach) / delta, 0.0, 1.0) * kTable;
+            const int i = static_cast<int>(u);
+            const double w = u - i;
+            g = start_g[i] + w * (start_g[i + 1] - start_g[i]);
+            q = start_q[i] + w * (start_q[i + 1] - start_q[i]);
+        }
+        g *= weight * norm_factor;
+        for (int k = lo; k <= hi; ++k) {
+            values[k - lo] = g;
+            g *= q;
+            q *= q_step;
+        }
         return std::max(0, hi - lo + 1);
     }
     // Adds sign x the pair's contribution into sum[slot * bins + k].
@@ -180,23 +205,132 @@ PairRelaxation::PairRelaxation(const Exemplar& exemplar, const Params& params) {
 
 namespace {
 
-// Per-thread state of the relaxation: the tile's own changes to the sums and scratch.
-struct Worker {
-    struct Present {
-        int slot = 0, lo = 0, count = 0, at = 0;  // a present pair's bins; `at`: offset into values
+// What one thread needs to move elements: the sums' shape, the error's factors and its
+// scratch. The sums of element i's pairs are dense per class pair of its type (a few times
+// 50 bins), which is cheaper than tracking the bins a move touches: every bin is touched.
+class Mover {
+public:
+    struct Shared {
+        const PairSums* sums;
+        const std::vector<double>* f;       // sums -> g, per slot and bin
+        const std::vector<double>* target;  // the exemplar's g
+        const std::vector<double>* hard_core;
+        const std::vector<std::vector<int>>* slots_of_type;  // type a -> slot of (a, b) for each b
+        int bins, first;                                   // first: the first bin the error counts
+        double reach2;
     };
-    std::vector<double> local, delta;  // slots x bins
-    std::vector<Present> present;
-    std::vector<double> values;
-    std::vector<int> near, touched;
-    void add(int at, double x) {
-        if (delta[at] == 0.0) touched.push_back(at);
-        delta[at] += x;
+    Mover(const Shared& shared, size_t size)  // size: slots x bins
+        : local(size, 0.0), sh_(shared), old_(size, 0.0), trial_(size, 0.0), best_(size, 0.0) {}
+
+    std::vector<double> local;  // this tile's changes to the sums since the colour began
+
+    // Gathers element i's neighbours that any step of at most `step` could pair with, and
+    // the sums of its present pairs.
+    void gather(int i, const std::vector<Vec3>& p, const std::vector<int>& type, double step, const MovingGrid& grid) {
+        const double r = std::sqrt(sh_.reach2) + step, r2 = r * r;
+        near_.clear();
+        grid.for_each_near(p[i], [&](int j) {
+            if (j != i && squared_norm(p[j] - p[i]) <= r2) near_.push_back(j);
+        });
+        a_ = type[i];
+        pairs_at(p[i], p, type, old_, false);  // the present place stands whatever its distances
     }
-    void clear_delta() {
-        for (int at : touched) delta[at] = 0.0;
-        touched.clear();
+    // The change of the error if the gathered element moved to q; false when q comes closer
+    // to a neighbour than the exemplar's closest pair of their types.
+    bool change_at(const Vec3& q, const std::vector<Vec3>& p, const std::vector<int>& type,
+                   const std::vector<double>& s, double& change) {
+        if (!pairs_at(q, p, type, trial_, true)) return false;
+        const std::vector<double>& f = *sh_.f;
+        const std::vector<double>& target = *sh_.target;
+        change = 0.0;
+        for (int slot : (*sh_.slots_of_type)[a_])
+            for (int k = sh_.first; k < sh_.bins; ++k) {
+                const size_t at = static_cast<size_t>(slot) * sh_.bins + k;
+                const double now = f[at] * (s[at] + local[at]) - target[at];
+                const double next = now + f[at] * (trial_[at] - old_[at]);
+                change += next * next - now * now;
+            }
+        return true;
     }
+    void keep_trial() { std::swap(trial_, best_); }
+    // Books the kept move (the trial last passed to keep_trial) into `local`.
+    void commit() {
+        for (int slot : (*sh_.slots_of_type)[a_])
+            for (int k = 0; k < sh_.bins; ++k) {
+                const size_t at = static_cast<size_t>(slot) * sh_.bins + k;
+                local[at] += best_[at] - old_[at];
+            }
+    }
+
+private:
+    // Sums of the pairs element (type a_) would make at q into `out` (its type's slots).
+    bool pairs_at(const Vec3& q, const std::vector<Vec3>& p, const std::vector<int>& type, std::vector<double>& out,
+                  bool check_hard_core) const {
+        for (int slot : (*sh_.slots_of_type)[a_]) std::fill_n(out.begin() + static_cast<long>(slot) * sh_.bins, sh_.bins, 0.0);
+        double v[PairSums::kMaxSpan];
+        for (int j : near_) {
+            const Vec3 d = p[j] - q;
+            const double d2 = squared_norm(d);
+            if (d2 > sh_.reach2) continue;
+            const int slot = (*sh_.slots_of_type)[a_][type[j]];
+            const double core = (*sh_.hard_core)[slot];
+            if (check_hard_core && d2 < core * core) return false;  // closer than the exemplar ever is
+            int lo = 0;
+            const int c = sh_.sums->pair(d, lo, v);
+            double* row = out.data() + static_cast<size_t>(slot) * sh_.bins + lo;
+            for (int m = 0; m < c; ++m) row[m] += v[m];
+        }
+        return true;
+    }
+    Shared sh_;
+    std::vector<double> old_, trial_, best_;
+    std::vector<int> near_;
+    int a_ = 0;
+};
+
+// A direction drawn from the keyed stream: uniform on the circle (2D) or sphere (3D).
+Vec3 random_direction(const core::KeyedRng& rng, std::uint64_t key, int dim) {
+    if (dim == 2) {
+        const double angle = 2.0 * kPi * rng.uniform(3 * key);
+        return {std::cos(angle), std::sin(angle), 0.0};
+    }
+    const double z = 2.0 * rng.uniform(3 * key) - 1.0, angle = 2.0 * kPi * rng.uniform(3 * key + 1);
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return {r * std::cos(angle), r * std::sin(angle), z};
+}
+
+// The tiles of a sweep: square (cubic) tiles three reaches wide, coloured 2 x 2 (x 2), so
+// that tiles of one colour are a tile apart and never see each other's elements.
+struct SweepTiles {
+    SweepTiles(const Box& box, double tile, int dim) : box_(box), tile_(tile), dim_(dim) {
+        for (int k = 0; k < dim; ++k) n_[k] = std::max(1, static_cast<int>(std::ceil(box.size()[k] / tile)));
+        members.resize(static_cast<size_t>(n_[0]) * n_[1] * n_[2]);
+    }
+    int colours() const { return dim_ == 2 ? 4 : 8; }
+    void assign(const std::vector<Vec3>& p) {
+        for (auto& m : members) m.clear();
+        for (int i = 0; i < static_cast<int>(p.size()); ++i) {
+            int c[3] = {0, 0, 0};
+            for (int k = 0; k < dim_; ++k) c[k] = std::clamp(static_cast<int>((p[i][k] - box_.lo[k]) / tile_), 0, n_[k] - 1);
+            members[(static_cast<size_t>(c[2]) * n_[1] + c[1]) * n_[0] + c[0]].push_back(i);
+        }
+    }
+    std::vector<int> of_colour(int colour) const {
+        std::vector<int> active;
+        for (size_t t = 0; t < members.size(); ++t) {
+            const int x = static_cast<int>(t % n_[0]), y = static_cast<int>((t / n_[0]) % n_[1]),
+                      z = static_cast<int>(t / (static_cast<size_t>(n_[0]) * n_[1]));
+            if ((x % 2) + 2 * (y % 2) + 4 * (z % 2) == colour && !members[t].empty()) active.push_back(static_cast<int>(t));
+        }
+        return active;
+    }
+    std::vector<std::vector<int>> members;
+
+private:
+    Box box_;
+    double tile_;
+    int dim_;
+    int n_[3] = {1, 1, 1};
 };
 
 }  // namespace
@@ -209,7 +343,8 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
     const int dim = out.dimension, n = static_cast<int>(out.elements.size());
     const int slots = types_ * (types_ + 1) / 2;
     std::vector<long> count(types_, 0);
-    for (const Element& e : out.elements) ++count[e.type];
+    std::vector<int> type(n);
+    for (int i = 0; i < n; ++i) ++count[type[i] = out.elements[i].type];
     const std::vector<double> f = sum_to_g(count, types_, bins_, step_, dim, domain.measure());
     domain.prepare_overlap(threads);
     const PairSums sums(bins_, step_, bandwidth_, &domain);
@@ -222,7 +357,7 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
     for (int i = 0; i < n; ++i)
         grid.for_each_near(p[i], [&](int j) {
             const Vec3 d = p[j] - p[i];
-            if (j > i && squared_norm(d) <= reach2) sums.add(d, pair_index(out.elements[i].type, out.elements[j].type), 1.0, s);
+            if (j > i && squared_norm(d) <= reach2) sums.add(d, pair_index(type[i], type[j]), 1.0, s);
         });
     const int first = static_cast<int>(std::ceil(bandwidth_ / step_));
     const auto error = [&] {
@@ -232,77 +367,32 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
         return e;
     };
     report.before = error();
+    std::vector<std::vector<int>> slots_of_type(types_);
+    for (int a = 0; a < types_; ++a)
+        for (int b = 0; b < types_; ++b) slots_of_type[a].push_back(pair_index(a, b));
+    const Mover::Shared shared{&sums, &f, &target_, &hard_core_, &slots_of_type, bins_, first, reach2};
     // The steps' draws are keyed by the lattice cell of the element's place (so fine that two
     // elements never share one) and the sweep, not by its index.
-    const double key_cell = kKeyCellSpacings * spacing_;
+    const double key_cell = kKeyCellSpacings * spacing_, largest_step = kStepSpacings * spacing_;
 
-    // The change of the sums if element i (type a) moved to q: its present pairs out, new in.
-    const auto trial_delta = [&](Worker& w, const Vec3& q, int a) {
-        w.clear_delta();
-        double v[PairSums::kMaxSpan];
-        for (const Worker::Present& pr : w.present)
-            for (int m = 0; m < pr.count; ++m) w.add(pr.slot * bins_ + pr.lo + m, -w.values[pr.at + m]);
-        for (int j : w.near) {
-            const Vec3 d = p[j] - q;
-            if (squared_norm(d) > reach2) continue;
-            const int pair = pair_index(a, out.elements[j].type);
-            if (squared_norm(d) < hard_core_[pair] * hard_core_[pair]) return false;  // closer than the exemplar ever is
-            int lo = 0;
-            const int c = sums.pair(d, lo, v);
-            for (int m = 0; m < c; ++m) w.add(pair * bins_ + lo + m, v[m]);
-        }
-        return true;
-    };
     // One element: the best of kProposals keyed random steps, kept if it lowers the error
     // (against the sums at the start of the colour plus the tile's own changes).
-    const auto relax_element = [&](int i, int sweep, Worker& w) {
+    const auto relax_element = [&](int i, int sweep, Mover& mover) {
         if (out.elements[i].locked || (!held.empty() && held[i])) return false;
-        const int a = out.elements[i].type;
-        double v[PairSums::kMaxSpan];
-        w.near.clear();
-        w.present.clear();
-        w.values.clear();
-        grid.for_each_near(p[i], [&](int j) {
-            if (j == i) return;
-            w.near.push_back(j);
-            const Vec3 d = p[j] - p[i];
-            if (squared_norm(d) > reach2) return;
-            Worker::Present pr;
-            pr.slot = pair_index(a, out.elements[j].type);
-            pr.at = static_cast<int>(w.values.size());
-            pr.count = sums.pair(d, pr.lo, v);
-            w.values.insert(w.values.end(), v, v + pr.count);
-            w.present.push_back(pr);
-        });
-        double best_change = 0.0;
-        Vec3 best;
+        mover.gather(i, p, type, largest_step, grid);
         const core::KeyedRng rng(seed, core::Purpose::jitter, core::lattice_key(p[i].x, p[i].y, p[i].z, key_cell),
                                  static_cast<std::uint64_t>(sweep));
+        double best_change = 0.0;
+        Vec3 best;
         for (int m = 0; m < kProposals; ++m) {
             const std::uint64_t key = static_cast<std::uint64_t>(m);
-            Vec3 dir;
-            if (dim == 2) {
-                const double angle = 2.0 * kPi * rng.uniform(3 * key);
-                dir = {std::cos(angle), std::sin(angle), 0.0};
-            } else {
-                const double z = 2.0 * rng.uniform(3 * key) - 1.0, angle = 2.0 * kPi * rng.uniform(3 * key + 1);
-                const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-                dir = {r * std::cos(angle), r * std::sin(angle), z};
-            }
-            const Vec3 q = p[i] + dir * (kStepSpacings * spacing_ * rng.uniform(3 * key + 2));
-            if (!domain.inside(q) || !trial_delta(w, q, a)) continue;
+            const Vec3 q = p[i] + random_direction(rng, key, dim) * (largest_step * rng.uniform(3 * key + 2));
             double change = 0.0;
-            for (int at : w.touched) {
-                if (at % bins_ < first) continue;
-                const double now = f[at] * (s[at] + w.local[at]) - target_[at];
-                const double next = now + f[at] * w.delta[at];
-                change += next * next - now * now;
-            }
-            if (change < best_change) best_change = change, best = q;
+            if (!domain.inside(q) || !mover.change_at(q, p, type, s, change)) continue;
+            if (change < best_change) best_change = change, best = q, mover.keep_trial();
         }
         if (!(best_change < 0.0)) return false;
-        trial_delta(w, best, a);  // the scratch holds the last proposal's: the best one again
-        for (int at : w.touched) w.local[at] += w.delta[at];
+        mover.commit();
         grid.move(i, p[i], best);
         const Vec3 shift = best - p[i];
         p[i] = best;
@@ -312,44 +402,26 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
         return true;
     };
 
-    // Parallel sweeps that give the same result for any thread count: square tiles three
-    // grid cells (three reaches) wide, coloured 2 x 2 (x 2): the tiles of one colour are a
-    // tile apart, so their elements never see each other or each other's grid cells; they
-    // are relaxed at once, each against the sums at the start of the colour plus its own
-    // changes, and the changes are added in tile order afterwards.
-    const Box box = domain.bounds();
-    const double tile = 3.0 * reach;
-    int tiles[3] = {1, 1, 1};
-    for (int k = 0; k < dim; ++k) tiles[k] = std::max(1, static_cast<int>(std::ceil(box.size()[k] / tile)));
-    const int colours = dim == 2 ? 4 : 8;
-    std::vector<Worker> workers(core::resolve_threads(threads));
-    for (Worker& w : workers) w.delta.assign(s.size(), 0.0);
-    std::vector<std::vector<int>> members(static_cast<size_t>(tiles[0]) * tiles[1] * tiles[2]);
+    // Parallel sweeps that give the same result for any thread count: the tiles of one
+    // colour are relaxed at once, each against the sums at the start of the colour plus its
+    // own changes, and the changes are added in tile order afterwards.
+    SweepTiles tiles(domain.bounds(), 3.0 * reach, dim);
+    std::vector<Mover> movers(core::resolve_threads(threads), Mover(shared, s.size()));
     std::vector<std::vector<double>> changes;
     std::vector<int> moved;
     for (int sweep = 0; sweep < sweeps; ++sweep) {
-        for (auto& m : members) m.clear();
-        for (int i = 0; i < n; ++i) {
-            int c[3] = {0, 0, 0};
-            for (int k = 0; k < dim; ++k) c[k] = std::clamp(static_cast<int>((p[i][k] - box.lo[k]) / tile), 0, tiles[k] - 1);
-            members[(static_cast<size_t>(c[2]) * tiles[1] + c[1]) * tiles[0] + c[0]].push_back(i);
-        }
-        for (int colour = 0; colour < colours; ++colour) {
-            std::vector<int> active;
-            for (size_t t = 0; t < members.size(); ++t) {
-                const int x = static_cast<int>(t % tiles[0]), y = static_cast<int>((t / tiles[0]) % tiles[1]),
-                          z = static_cast<int>(t / (static_cast<size_t>(tiles[0]) * tiles[1]));
-                if ((x % 2) + 2 * (y % 2) + 4 * (z % 2) == colour && !members[t].empty()) active.push_back(static_cast<int>(t));
-            }
+        tiles.assign(p);
+        for (int colour = 0; colour < tiles.colours(); ++colour) {
+            const std::vector<int> active = tiles.of_colour(colour);
             const int count_active = static_cast<int>(active.size());
             changes.assign(count_active, {});
             moved.assign(count_active, 0);
-            core::parallel_for(count_active, static_cast<int>(workers.size()), [&](int begin, int end, int thread) {
-                Worker& w = workers[thread];
+            core::parallel_for(count_active, static_cast<int>(movers.size()), [&](int begin, int end, int thread) {
+                Mover& mover = movers[thread];
                 for (int t = begin; t < end; ++t) {
-                    w.local.assign(s.size(), 0.0);
-                    for (int i : members[active[t]]) moved[t] += relax_element(i, sweep, w);
-                    changes[t] = w.local;
+                    mover.local.assign(s.size(), 0.0);
+                    for (int i : tiles.members[active[t]]) moved[t] += relax_element(i, sweep, mover);
+                    changes[t] = mover.local;
                 }
             });
             for (int t = 0; t < count_active; ++t) {

@@ -80,7 +80,7 @@ OptionTable<O> make_table() {
         "relax_sweeps",
         "With a region: sweeps of the final pair-correlation relaxation of the elements grown "
         "(as 'tessera synth'); 0 = none; negative = automatic (4 for a soft pattern, whose "
-        "closest pairs lie well under its typical distance, else 0). Single-sample elements.",
+        "closest pairs lie well under its typical distance, else 1). Single-sample elements.",
         [](auto& o) -> auto& { return o.relax_sweeps; }, between(-1, 1000)));
     t.push_back(text_row<O>(
         "field", field_doc, [](const O& o) { return o.field.active() ? o.field.describe() : std::string(); },

@@ -1,6 +1,7 @@
 // The pair-correlation relaxation of a grow(region) call's elements (grow/relax.hpp).
 #include "grow/relax.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "det/pair_relaxation.hpp"
@@ -29,6 +30,7 @@ void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, Gr
     // that could come within the largest hard core of one in its sweeps stays.
     const int sweeps = g.relax_sweeps;
     const double drift = sweeps * g.relaxation->max_step(), seam = drift + g.reach;
+    const double edge_band = std::max(2.0 * drift, g.metric.params.spacing);
     Arrangement a;
     a.dimension = g.exemplar.dimension;
     a.types = g.exemplar.types;
@@ -40,10 +42,11 @@ void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, Gr
         if (!region.inside(o.p)) continue;
         const double radius = o.kept >= 0 ? g.existing.elements[o.kept].radius : g.exemplar.elements[o.source].radius;
         a.add_element(o.type, {o.p}, radius);
-        // The elements along the region's edge stay too: the estimator's edge correction
-        // does not see a gap opening between them and the edge (a lattice's border row
-        // drifted inward and left a hole 1.2x the exemplar's at a corner).
-        const bool stays = i < first || (o.locked && !o.filled) || region.distance_to_boundary(o.p) < 2.0 * drift ||
+        // The elements within a spacing (or twice the sweeps' reach) of the region's edge
+        // stay too: the estimator's edge correction does not see a gap opening between them
+        // and the edge (a lattice's border row drifted inward and left a hole 1.2x to 1.3x
+        // the exemplar's).
+        const bool stays = i < first || (o.locked && !o.filled) || region.distance_to_boundary(o.p) < edge_band ||
                            near_outside(g, i, region, seam);
         held.push_back(stays ? 1 : 0);
         index.push_back(i);
@@ -71,7 +74,7 @@ void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, Gr
     out.relaxed += report.moves;
     if (moved.empty()) return;
     repair_round(g, moved, &region);
-    const int filled = fill_enclosed_holes(g, first, static_cast<int>(g.out.size()), &region);
+    const int filled = fill_enclosed_holes_around(g, moved, &region);
     out.filled += filled;
     out.added += filled;
 }

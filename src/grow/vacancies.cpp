@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/parallel.hpp"
 #include "grow/generate.hpp"
@@ -302,12 +303,10 @@ std::vector<Hole> find_holes(const Grower::Impl& g, const HoleFinder& finder,
 
 namespace {
 
-int fill_holes(Grower::Impl& g, int first, int end, const Domain* region, bool enclosed_only) {
-    if (!g.fills_holes || first >= end) return 0;
+int fill_holes(Grower::Impl& g, std::vector<int> around, const Domain* region, bool enclosed_only) {
+    if (!g.fills_holes || around.empty()) return 0;
     const HoleFinder finder(g, region, enclosed_only);
     HoleFiller filler(g, finder);
-    std::vector<int> around;
-    for (int i = first; i < end; ++i) around.push_back(i);
     for (int pass = 0; pass < kPasses && !around.empty(); ++pass) {
         const size_t before = filler.inserted().size();
         for (const Hole& h : find_holes(g, finder, around)) filler.fill(h);
@@ -321,7 +320,13 @@ int fill_holes(Grower::Impl& g, int first, int end, const Domain* region, bool e
 }  // namespace
 
 int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region) {
-    return fill_holes(g, first, end, region, true);
+    std::vector<int> around;
+    for (int i = first; i < end; ++i) around.push_back(i);
+    return fill_holes(g, std::move(around), region, true);
+}
+
+int fill_enclosed_holes_around(Grower::Impl& g, const std::vector<int>& around, const Domain* region) {
+    return fill_holes(g, around, region, true);
 }
 
 namespace {

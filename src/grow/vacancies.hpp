@@ -15,6 +15,9 @@ namespace tessera::grow {
 // or the outside of `region` (when given), surround it in every direction. Only for
 // exemplars of single-sample elements (returns 0 otherwise). Returns how many were added.
 int fill_enclosed_holes(Grower::Impl& g, int first, int end, const Domain* region);
+// The same next to the elements `around` only (those a later pass moved: a hole it opened
+// lies next to one of them).
+int fill_enclosed_holes_around(Grower::Impl& g, const std::vector<int>& around, const Domain* region);
 
 // The same for a region growth has covered, probed on a lattice: every hole in it deeper
 // than 1.25x the exemplar's counts, enclosed or not. Where two holes run into each other (a
