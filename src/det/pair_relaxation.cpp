@@ -333,15 +333,39 @@ private:
     int n_[3] = {1, 1, 1};
 };
 
+// The kernel sums of every pair of the output closer than the reach, per class pair. Blocks
+// of a fixed number of elements are summed in parallel and added in block order, so the
+// result does not depend on the thread count.
+std::vector<double> output_sums(const std::vector<Vec3>& p, const std::vector<int>& type, const MovingGrid& grid,
+                                const PairSums& sums, double reach2, int types, int bins, int threads,
+                                const core::Interrupt* interrupt) {
+    constexpr int kBlock = 2048;
+    const int n = static_cast<int>(p.size()), blocks = (n + kBlock - 1) / kBlock;
+    const size_t size = static_cast<size_t>(types * (types + 1) / 2) * bins;
+    std::vector<std::vector<double>> part(blocks, std::vector<double>(size, 0.0));
+    core::parallel_for(blocks, threads, [&](int begin, int end, int thread) {
+        for (int b = begin; b < end; ++b, core::check(interrupt, thread))
+            for (int i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
+                grid.for_each_near(p[i], [&](int j) {
+                    const Vec3 d = p[j] - p[i];
+                    if (j > i && squared_norm(d) <= reach2) sums.add(d, slot_of(type[i], type[j], types), 1.0, part[b]);
+                });
+    });
+    std::vector<double> s(size, 0.0);
+    for (const std::vector<double>& block : part)
+        for (size_t at = 0; at < size; ++at) s[at] += block[at];
+    return s;
+}
+
 }  // namespace
 
 PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& domain, const std::vector<char>& held,
                                              int sweeps, std::uint64_t seed, int threads,
-                                             const std::function<void(int)>& after_sweep) const {
+                                             const std::function<void(int)>& after_sweep,
+                                             const core::Interrupt* interrupt) const {
     Report report;
     if (!applies_ || out.types.size() != static_cast<size_t>(types_) || sweeps <= 0) return report;
     const int dim = out.dimension, n = static_cast<int>(out.elements.size());
-    const int slots = types_ * (types_ + 1) / 2;
     std::vector<long> count(types_, 0);
     std::vector<int> type(n);
     for (int i = 0; i < n; ++i) ++count[type[i] = out.elements[i].type];
@@ -353,12 +377,7 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
     MovingGrid grid(domain.bounds(), reach, dim);
     for (int i = 0; i < n; ++i) grid.insert(i, p[i]);
     // The output's sums, then the error: bins from one bandwidth on, as the metric counts.
-    std::vector<double> s(static_cast<size_t>(slots) * bins_, 0.0);
-    for (int i = 0; i < n; ++i)
-        grid.for_each_near(p[i], [&](int j) {
-            const Vec3 d = p[j] - p[i];
-            if (j > i && squared_norm(d) <= reach2) sums.add(d, pair_index(type[i], type[j]), 1.0, s);
-        });
+    std::vector<double> s = output_sums(p, type, grid, sums, reach2, types_, bins_, core::resolve_threads(threads), interrupt);
     const int first = static_cast<int>(std::ceil(bandwidth_ / step_));
     const auto error = [&] {
         double e = 0.0;
@@ -419,6 +438,7 @@ PairRelaxation::Report PairRelaxation::relax(Arrangement& out, const Domain& dom
             core::parallel_for(count_active, static_cast<int>(movers.size()), [&](int begin, int end, int thread) {
                 Mover& mover = movers[thread];
                 for (int t = begin; t < end; ++t) {
+                    core::check(interrupt, thread);
                     mover.local.assign(s.size(), 0.0);
                     for (int i : tiles.members[active[t]]) moved[t] += relax_element(i, sweep, mover);
                     changes[t] = mover.local;

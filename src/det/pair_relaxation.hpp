@@ -17,6 +17,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "det/model.hpp"
 
 namespace tessera::det {
@@ -38,9 +39,11 @@ public:
     };
     // Relaxes `out` for `sweeps` sweeps; held[e] != 0 (may be empty) keeps element e.
     // Deterministic for any thread count. `after_sweep(s)`, when given, is called after
-    // sweep s (0-based), for progress.
+    // sweep s (0-based), for progress; `interrupt`, when given, is checked every few
+    // hundred elements (a sweep over a million elements takes seconds).
     Report relax(Arrangement& out, const Domain& domain, const std::vector<char>& held, int sweeps,
-                 std::uint64_t seed, int threads, const std::function<void(int)>& after_sweep = {}) const;
+                 std::uint64_t seed, int threads, const std::function<void(int)>& after_sweep = {},
+                 const core::Interrupt* interrupt = nullptr) const;
 
 private:
     bool applies_ = false;

@@ -197,7 +197,7 @@ void finish(DetSession::Impl& s) {
         core::CrowdingRepairOptions repair = repair_options(s);
         hold_floor_levels(repair, state.arrangement, domain, params);
         relaxation.relax(state.arrangement, domain, repair.held_level, s.options.relax_sweeps, s.options.seed, s.threads,
-                         [&](int sweep) { s.report("relax", sweep, s.options.relax_sweeps); });
+                         [&](int sweep) { s.report("relax", sweep, s.options.relax_sweeps); }, &s.interrupt);
     }
     s.report("repair", -1, 1);
     keep_inside_domain(state.arrangement, domain, params.dimension);

@@ -62,7 +62,7 @@ void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, Gr
             e.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - g.t0).count();
             g.last_event = e;
             if (g.progress && !g.progress(e)) throw Cancelled();
-        });
+        }, &g.interrupt);
     std::vector<int> moved;
     for (size_t k = 0; k < index.size(); ++k)
         if (!held[k] && !(a.elements[k].position == g.out[index[k]].p)) {
