@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/dynamic_grid.hpp"
+#include "grow/ball_lattice.hpp"
 
 namespace tessera::grow {
 
@@ -24,19 +25,6 @@ constexpr int kMinCounted = 8;
 // Points per axis of the lattice that measures the share of a disk inside the window.
 constexpr int kLattice = 16;
 
-// Points of a regular lattice inside the unit disk (ball).
-std::vector<Vec3> unit_ball_lattice(int dimension) {
-    std::vector<Vec3> points;
-    const int nz = dimension == 3 ? kLattice : 1;
-    for (int i = 0; i < kLattice; ++i)
-        for (int j = 0; j < kLattice; ++j)
-            for (int k = 0; k < nz; ++k) {
-                const Vec3 p{(i + 0.5) / kLattice * 2 - 1, (j + 0.5) / kLattice * 2 - 1,
-                             dimension == 3 ? (k + 0.5) / kLattice * 2 - 1 : 0.0};
-                if (dot(p, p) <= 1.0) points.push_back(p);
-            }
-    return points;
-}
 
 }  // namespace
 
@@ -55,7 +43,7 @@ CrowdCeiling exemplar_crowd_ceiling(const Exemplar& ex, double total_density) {
     }
     core::DynamicGrid grid(radius, d);
     for (int i = 0; i < n; ++i) grid.insert(i, p[i]);
-    const std::vector<Vec3> lattice = unit_ball_lattice(d);
+    const std::vector<Vec3> lattice = unit_ball_lattice(d, kLattice);
     std::vector<double> counts;
     for (int i = 0; i < n; ++i) {
         int inside = 0;

@@ -172,6 +172,18 @@ int Grower::Impl::add(const grow::OutElement& e) {
     return i;
 }
 
+int Grower::Impl::add_filling(int type, int source, const Vec3& p) {
+    grow::OutElement e;
+    e.p = p;
+    e.type = type;
+    e.source = source;
+    e.frame = frame_at(p);
+    e.match = source;
+    e.born = round;
+    e.id = next_id++;
+    return add(e);
+}
+
 void Grower::Impl::move(int i, const Vec3& p) {
     if (crowd.active()) count_crowd(out[i].p, i, -1);
     out[i].p = p;

@@ -214,6 +214,9 @@ struct Grower::Impl {
     double compute_hard_core(int a, int b) const;
     // Appends an element (grid included); returns its index.
     int add(const grow::OutElement& e);
+    // Appends a copy of input element `source` (of type `type`) put into a hole at p: in the
+    // field's frame there, born this round, with a new id, not on the horizon; returns its index.
+    int add_filling(int type, int source, const Vec3& p);
     // Adds `change` to the crowd of every element other than `self` within the ceiling's
     // radius of p; returns how many there are.
     int count_crowd(const Vec3& p, int self, int change);

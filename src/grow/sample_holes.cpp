@@ -126,15 +126,7 @@ private:
     }
 
     void add(int t, int source, const Vec3& p) {
-        OutElement e;
-        e.p = p;
-        e.type = t;
-        e.source = source;
-        e.frame = g_.frame_at(p);
-        e.match = source;
-        e.born = g_.round;
-        e.id = g_.next_id++;
-        index_samples(g_.add(e));
+        index_samples(g_.add_filling(t, source, p));
         balance_.add(t);
         ++added_;
     }

@@ -5,6 +5,9 @@
 #include <numbers>
 #include <queue>
 
+#include "grow/ball_lattice.hpp"
+#include "grow/vacancies.hpp"
+
 namespace tessera::grow {
 
 namespace {
@@ -17,26 +20,11 @@ constexpr double kTolerance = 0.02;
 constexpr double kDeviations = 2.0;
 // Points per axis of the lattice that measures the share of a disk inside the region.
 constexpr int kLattice = 8;
-// The hole the covered-hole fill puts an element in: deeper than this times the exemplar's
-// largest (grow/vacancies.cpp).
-constexpr double kCoveredDepth = 1.25;
 // The pattern search for the hole a removal leaves: at most this many steps, until the step
 // is under this share of the exemplar's largest hole.
 constexpr int kSearchSteps = 40;
 constexpr double kSearchEnd = 0.02;
 
-std::vector<Vec3> unit_ball_lattice(int dimension) {
-    std::vector<Vec3> points;
-    const int nz = dimension == 3 ? kLattice : 1;
-    for (int i = 0; i < kLattice; ++i)
-        for (int j = 0; j < kLattice; ++j)
-            for (int k = 0; k < nz; ++k) {
-                const Vec3 p{(i + 0.5) / kLattice * 2 - 1, (j + 0.5) / kLattice * 2 - 1,
-                             dimension == 3 ? (k + 0.5) / kLattice * 2 - 1 : 0.0};
-                if (dot(p, p) <= 1.0) points.push_back(p);
-            }
-    return points;
-}
 
 // The elements whose centre lies in the region, flagged per element of g.out.
 std::vector<int> elements_in(const Grower::Impl& g, const Domain& region, std::vector<char>& in_region) {
@@ -61,12 +49,12 @@ double rim_of(const Grower::Impl& g, int j) {
 // Whether removing element i (and those `gone` says) would open a hole the covered-hole fill
 // (grow/vacancies.hpp) puts an element back in: from i's place, a pattern search climbs the
 // rim-to-rim clearance to the centre of the hole i leaves, and that hole is deeper than
-// kCoveredDepth times the exemplar's largest. Removing an element of an even pattern's
+// kCoveredHoleDepth times the exemplar's largest. Removing an element of an even pattern's
 // lattice opens one (cells: a hole 1.6x the exemplar's); one of a pair squeezed together
 // does not.
 template <class Gone>
 bool opens_hole(const Grower::Impl& g, int i, double max_rim, const Gone& gone) {
-    const double depth = kCoveredDepth * g.hole_radius;
+    const double depth = kCoveredHoleDepth * g.hole_radius;
     const int d = g.metric.dimension;
     auto clearance = [&](const Vec3& c) {
         double best = depth + 1.0;
@@ -123,7 +111,7 @@ int thin_to_density(Grower::Impl& g, int first, const Domain& region) {
     // Edge-corrected counts within R (the disk's share inside the region).
     const int d = g.metric.dimension;
     const double radius = kRadius * std::pow(density, -1.0 / d);
-    const std::vector<Vec3> lattice = unit_ball_lattice(d);
+    const std::vector<Vec3> lattice = unit_ball_lattice(d, kLattice);
     std::vector<double> crowd(g.out.size(), 0.0), weight(g.out.size(), 0.0);
     for (const int i : inside) {
         g.interrupt.check(0);

@@ -47,12 +47,6 @@ constexpr double kSqueeze = 0.8;
 // of the small ones).
 constexpr double kOverShareDepth = 1.1;
 
-// In a covered region only holes this many times deeper than the exemplar's largest are
-// filled: a region many times the exemplar's size has larger holes of its own (the largest
-// of a random pattern grows with the area), and filling every hole over the exemplar's
-// made clustered and random patterns regular (the redwood seedlings' pair correlation error
-// 0.14 -> 0.17).
-constexpr double kCoveredDepth = 1.25;
 
 // The covered pass's probe lattice, in exemplar holes, and the most probes it makes (a
 // region that would need more is left to the rounds' own search).
@@ -80,7 +74,7 @@ public:
           enclosed_only_(enclosed_only),
           dirs_(probe_directions(g.metric.dimension)),
           spacing_(g.metric.params.spacing),
-          hole_(enclosed_only ? g.hole_radius : kCoveredDepth * g.hole_radius) {
+          hole_(enclosed_only ? g.hole_radius : kCoveredHoleDepth * g.hole_radius) {
         for (const Element& e : g.exemplar.elements) max_rim_ = std::max(max_rim_, e.radius);
     }
 
@@ -257,15 +251,7 @@ private:
                                         : (from.source >= 0 ? g_.input.centroid[from.source] : Vec3{});
             const int source = g_.input.nearest_in_pool(t, near_input, 1e300);
             if (source < 0) continue;
-            OutElement e;
-            e.p = c;
-            e.type = t;
-            e.source = source;
-            e.frame = g_.frame_at(c);
-            e.match = source;
-            e.born = g_.round;
-            e.id = g_.next_id++;
-            inserted_.push_back(g_.add(e));
+            inserted_.push_back(g_.add_filling(t, source, c));
             balance_.add(t);
             return true;
         }

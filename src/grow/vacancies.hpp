@@ -10,6 +10,13 @@
 
 namespace tessera::grow {
 
+// In a covered region only holes this many times deeper than the exemplar's largest are
+// filled: a region many times the exemplar's size has larger holes of its own (the largest
+// of a random pattern grows with the area), and filling every hole over the exemplar's
+// made clustered and random patterns regular (the redwood seedlings' pair correlation error
+// 0.14 -> 0.17). The thinning leaves no hole deeper than this either.
+inline constexpr double kCoveredHoleDepth = 1.25;
+
 // Looks for enclosed holes next to elements [first, end) and fills them; the new elements
 // are appended (ids assigned, not on the horizon). A hole counts as enclosed when elements,
 // or the outside of `region` (when given), surround it in every direction. Only for
