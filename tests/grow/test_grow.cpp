@@ -400,15 +400,21 @@ TEST(Grow, NoodlesKeepMostOfTheirDensityWithoutCrossingOrHoles) {
 
 // Rods in a slab fit many orientations: a candidate that touches others takes another rod's
 // orientation only where the place and its neighbours hold fewer rods within r than the
-// exemplar's crowded ones (without that check they grew at 1.64x the exemplar's density).
-TEST(Grow, ThreeDimensionalRodsKeepTheirDensity) {
+// exemplar's crowded ones (without that check they grew at 1.64x the exemplar's density),
+// and the rounds still left them at 1.18x (1.25x inside) until the thinning of a covered
+// region took multi-sample elements too; removing a rod must not open a hole.
+TEST(Grow, ThreeDimensionalRodsKeepTheirDensityWithoutHoles) {
     const Exemplar ex = example("rods_3d");
     const Box b = ex.domain.bounds();
     const Domain region = Domain::box(b.lo, b.lo + Vec3{5 * b.size().x, 5 * b.size().y, b.size().z}, 3);
-    const Arrangement out = grown(ex, region);
+    Arrangement out = grown(ex, region);
     const double ratio = (out.elements.size() / region.measure()) / (ex.elements.size() / ex.domain.measure());
-    EXPECT_GT(ratio, 0.9);
-    EXPECT_LT(ratio, 1.3) << out.elements.size() << " rods";
+    EXPECT_GT(ratio, 0.95);
+    EXPECT_LT(ratio, 1.06) << out.elements.size() << " rods";
+    out.domain = region;
+    const double hole = largest_empty_circle(out).radius, exemplar_hole = largest_empty_circle(ex).radius;
+    EXPECT_LT(hole, 1.35 * exemplar_hole) << "hole " << hole << " vs the exemplar's " << exemplar_hole;
+    expect_no_crowding(ex, out, "rods");
 }
 
 TEST(Grow, ThreeDimensionalRodsStayInsideTheirRegion) {
