@@ -25,7 +25,6 @@ constexpr int kMinCounted = 8;
 // Points per axis of the lattice that measures the share of a disk inside the window.
 constexpr int kLattice = 16;
 
-
 }  // namespace
 
 CrowdCeiling exemplar_crowd_ceiling(const Exemplar& ex, double total_density) {

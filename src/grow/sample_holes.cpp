@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "grow/generate.hpp"
+#include "grow/sample_index.hpp"
 #include "tessera/metrics.hpp"
 
 namespace tessera::grow {
@@ -23,9 +24,7 @@ constexpr double kDepthCap = 3.0;
 class SampleHoles {
 public:
     SampleHoles(Grower::Impl& g, const Domain& region, double hole)
-        : g_(g), region_(region), hole_(hole), samples_(hole, g.metric.dimension), balance_(g) {
-        for (int i = 0; i < static_cast<int>(g.out.size()); ++i) index_samples(i);
-    }
+        : g_(g), region_(region), hole_(hole), samples_(g, hole), balance_(g) {}
 
     // Places emptier than the hole, deepest first (ties in lattice order).
     std::vector<std::pair<double, Vec3>> places() const {
@@ -76,31 +75,19 @@ public:
     int added() const { return added_; }
 
 private:
-    void index_samples(int i) {
-        const OutElement& o = g_.out[i];
-        g_.sample_positions(o.kept, o.source, o.frame, o.p, buffer_);
-        for (const Vec3& q : buffer_) {
-            samples_.insert(static_cast<int>(sample_at_.size()), q);
-            sample_at_.push_back(q);
-            owner_.push_back(i);
-        }
-    }
-
     // Distance from p to the nearest sample, capped at kDepthCap holes.
     double clearance(const Vec3& p) const {
         double best = kDepthCap * hole_;
-        samples_.for_each_within(
-            p, best, [&](int s) { return sample_at_[s]; }, [&](int s) { best = std::min(best, norm(sample_at_[s] - p)); });
+        samples_.for_each_within(p, best, [&](int s) { best = std::min(best, norm(samples_.at(s) - p)); });
         return best;
     }
 
     int nearest_element(const Vec3& p) const {
         int best = -1;
         double d = 1e300;
-        samples_.for_each_within(
-            p, kDepthCap * hole_ + g_.extent, [&](int s) { return sample_at_[s]; }, [&](int s) {
-                const double e = norm(sample_at_[s] - p);
-                if (e < d || (e == d && owner_[s] < best)) d = e, best = owner_[s];
+        samples_.for_each_within(p, kDepthCap * hole_ + g_.extent, [&](int s) {
+                const double e = norm(samples_.at(s) - p);
+                if (e < d || (e == d && samples_.owner(s) < best)) d = e, best = samples_.owner(s);
             });
         return best;
     }
@@ -111,10 +98,9 @@ private:
         g_.sample_positions(-1, source, frame, p, mine_);
         for (const Vec3& q : mine_) {
             bool clash = false;
-            samples_.for_each_within(
-                q, g_.reach + g_.metric.params.spacing, [&](int s) { return sample_at_[s]; }, [&](int s) {
-                    const double core = g_.sample_core(t, g_.out[owner_[s]].type);
-                    clash = clash || norm(sample_at_[s] - q) < core;
+            samples_.for_each_within(q, g_.reach + g_.metric.params.spacing, [&](int s) {
+                    const double core = g_.sample_core(t, g_.out[samples_.owner(s)].type);
+                    clash = clash || norm(samples_.at(s) - q) < core;
                 });
             if (clash) return false;
         }
@@ -126,7 +112,7 @@ private:
     }
 
     void add(int t, int source, const Vec3& p) {
-        index_samples(g_.add_filling(t, source, p));
+        samples_.add(g_.add_filling(t, source, p));
         balance_.add(t);
         ++added_;
     }
@@ -134,11 +120,9 @@ private:
     Grower::Impl& g_;
     const Domain& region_;
     const double hole_;
-    core::DynamicGrid samples_;  // every element's samples, by sample number
-    std::vector<Vec3> sample_at_;
-    std::vector<int> owner_;
+    SampleIndex samples_;
     TypeBalance balance_;
-    std::vector<Vec3> buffer_, mine_;
+    std::vector<Vec3> mine_;
     int added_ = 0;
 };
 

@@ -6,9 +6,9 @@
 #include <optional>
 #include <queue>
 
-#include "core/dynamic_grid.hpp"
 #include "core/parallel.hpp"
 #include "grow/ball_lattice.hpp"
+#include "grow/sample_index.hpp"
 #include "grow/vacancies.hpp"
 #include "tessera/metrics.hpp"
 
@@ -110,30 +110,19 @@ bool opens_hole(const Grower::Impl& g, int i, double max_rim, const Gone& gone) 
 class SampleClearance {
 public:
     SampleClearance(const Grower::Impl& g, double hole)
-        : g_(g), hole_(hole), limit_(kCoveredHoleDepth * hole), grid_(hole, g.metric.dimension) {
-        std::vector<Vec3> buffer;
-        for (int i = 0; i < static_cast<int>(g.out.size()); ++i) {
-            samples_of(i, buffer);
-            for (const Vec3& q : buffer) {
-                grid_.insert(static_cast<int>(at_.size()), q);
-                at_.push_back(q);
-                owner_.push_back(i);
-            }
-        }
-    }
+        : g_(g), hole_(hole), limit_(kCoveredHoleDepth * hole), samples_(g, hole) {}
     // Capped just past the limit: whether a place passes it is all the search asks.
     template <class Gone>
     bool opens_hole(int i, const Gone& gone, std::vector<Vec3>& buffer) const {
         const double cap = limit_ * 1.01;
         const auto clearance = [&](const Vec3& q) {
             double best = cap;
-            grid_.for_each_within(
-                q, cap, [&](int s) { return at_[s]; }, [&](int s) {
-                    if (!gone(owner_[s])) best = std::min(best, norm(at_[s] - q));
-                });
+            samples_.for_each_within(q, cap, [&](int s) {
+                if (!gone(samples_.owner(s))) best = std::min(best, norm(samples_.at(s) - q));
+            });
             return best;
         };
-        samples_of(i, buffer);
+        samples_.samples_of(i, buffer);
         buffer.push_back(g_.out[i].p);
         Vec3 start = buffer.front();
         double deepest = -1.0;
@@ -145,15 +134,9 @@ public:
     }
 
 private:
-    void samples_of(int i, std::vector<Vec3>& buffer) const {
-        const OutElement& o = g_.out[i];
-        g_.sample_positions(o.kept, o.source, o.frame, o.p, buffer);
-    }
     const Grower::Impl& g_;
     double hole_, limit_;
-    core::DynamicGrid grid_;  // every element's samples, by sample number
-    std::vector<Vec3> at_;
-    std::vector<int> owner_;
+    SampleIndex samples_;
 };
 
 }  // namespace
