@@ -36,6 +36,7 @@ enum class Purpose : std::uint64_t {
     dynamic_patch = 15,      // dynamic on a coarse motion: the first patch copied onto each element
     dynamic_graph = 16,      // graph synthesis: its node pool and the annealing of its motion paths
     dequantize = 17,         // rounded exemplars: the draw within each coordinate's rounding cell
+    grow_squeeze = 18,       // growth: the distance a minority type's inserted element pushes its own to
     test = 99
 };
 

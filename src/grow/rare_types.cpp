@@ -5,6 +5,8 @@
 #include <cmath>
 #include <queue>
 
+#include "core/rng.hpp"
+
 namespace tessera::grow {
 
 namespace {
@@ -13,6 +15,17 @@ namespace {
 // (the sum of its samples' hard-core balls): where more of them overlap it, the site is
 // passed over rather than left with a hole around the new element.
 constexpr double kRoomRatio = 1.5;
+
+// A minority type of single-sample elements packed at its jamming density (the stones of a
+// two-class pattern: growth places them as random sequential adsorption would, 0.17 per unit
+// area against the exemplar's 0.19 to 0.22) has no place left at its full hard core. Its
+// missing elements go where its own elements are at least this share of the hard core away,
+// the nearest of them pushed out to it (make_room).
+constexpr double kSqueeze = 0.8;
+// The push moves no element further than this share of the hard core, and stops after this
+// many sweeps: a site that needs more is passed over.
+constexpr double kMaxPush = 0.3;
+constexpr int kPushSweeps = 40;
 
 // The room of an element of type t: its samples' hard-core balls (radius half the type's
 // own sample or centroid hard core), summed.
@@ -40,7 +53,9 @@ public:
         own_ = core::DynamicGrid(spread_, g_.metric.dimension);
         for (int i = 0; i < static_cast<int>(g_.out.size()); ++i)
             if (g_.out[i].type == t && !is_removed(i)) own_.insert(i, g_.out[i].p);
-        const double floor = g_.hard_core(t, t);
+        core_ = g_.hard_core(t, t);
+        squeeze_ = !g_.bounds.has_samples && !rare_[t];
+        const double floor = squeeze_ ? kSqueeze * core_ : core_;
         std::priority_queue<std::pair<double, int>> sites;  // farthest first, then the lower index
         const int end = static_cast<int>(g_.out.size());
         for (int i = first_; i < end; ++i)
@@ -92,9 +107,16 @@ private:
         e.frame = g_.frame_at(e.p);
         if (!g_.fits_region(region_, -1, e.source, e.frame, e.p, mine_)) return false;
         if (!g_.crowd_allows(e.p)) return false;
+        if (squeeze_ && !make_room(e)) return false;
         g_.sample_positions(-1, e.source, e.frame, e.p, mine_);
         if (!overlapped(e)) return false;
+        for (size_t k = 0; k < pushed_.size(); ++k)
+            if (!overlapped_by(pushed_[k], pushed_to_[k])) return false;
         for (const int j : overlapped_) removed_[j - first_] = 1;
+        for (size_t k = 0; k < pushed_.size(); ++k) {
+            g_.move(pushed_[k], pushed_to_[k]);
+            own_.move(pushed_[k], pushed_to_[k]);
+        }
         e.match = e.source;
         e.born = g_.round;
         e.id = g_.next_id++;
@@ -104,18 +126,111 @@ private:
         return true;
     }
 
+    // The type's elements nearer to e than its hard core pushed out to it, e moving too:
+    // Gauss-Seidel sweeps over the pairs of the type's elements around e, each pair closer
+    // than the core moved apart (half each when both may move). The call's unlocked elements
+    // within 1.5 cores of e may move, those beyond stay. Fills pushed_ / pushed_to_ and sets
+    // e.p; false when the sweeps do not settle within kPushSweeps, or an element would move
+    // further than kMaxPush cores or leave the region.
+    bool make_room(OutElement& e) {
+        pushed_.clear();
+        pushed_to_.clear();
+        ids_.assign(1, -1);
+        pos_.assign(1, e.p);
+        free_.assign(1, 1);
+        own_.query(
+            e.p, (2.5 + kMaxPush) * core_, [&](int j) { return g_.out[j].p; }, near_);
+        for (const int j : near_) {
+            if (is_removed(j)) continue;
+            ids_.push_back(j);
+            pos_.push_back(g_.out[j].p);
+            free_.push_back(j >= first_ && !g_.out[j].locked && norm(g_.out[j].p - e.p) < 1.5 * core_);
+        }
+        from_ = pos_;
+        if (!push_apart(push_distance(e.p))) return false;
+        for (size_t k = 0; k < pos_.size(); ++k) {
+            if (!free_[k]) continue;
+            const double moved = norm(pos_[k] - from_[k]);
+            if (moved > kMaxPush * core_) return false;
+            if (k == 0 || moved == 0.0) continue;
+            const OutElement& o = g_.out[ids_[k]];
+            if (!g_.fits_region(region_, o.kept, o.source, o.frame, pos_[k], theirs_)) return false;
+            pushed_.push_back(ids_[k]);
+            pushed_to_.push_back(pos_[k]);
+        }
+        e.p = pos_[0];
+        return g_.fits_region(region_, -1, e.source, e.frame, e.p, mine_) && g_.crowd_allows(e.p);
+    }
+
+    // The distance make_room pushes the pairs around a site at p to: drawn (keyed by the
+    // site's world cell) from the lower half of the exemplar's nearest distances of the
+    // type, never under its hard core. Pushed to the hard core itself, every pushed pair
+    // stood at it and the type's pair correlation grew a spike there.
+    double push_distance(const Vec3& p) const {
+        const core::KeyedRng rng(g_.options.seed, core::Purpose::grow_squeeze,
+                                 core::lattice_key(p.x, p.y, p.z, 0.25 * core_), static_cast<std::uint64_t>(t_));
+        const double q = g_.bounds.centroids.quantile(t_, t_, 0.5 * rng.uniform(0));
+        return std::max(core_, q);
+    }
+
+    // The sweeps of make_room; true once a sweep finds no pair closer than `distance`.
+    bool push_apart(double distance) {
+        const int n = static_cast<int>(pos_.size());
+        for (int sweep = 0; sweep < kPushSweeps; ++sweep) {
+            bool crowded = false;
+            for (int a = 0; a < n; ++a)
+                for (int b = a + 1; b < n; ++b) {
+                    if (!free_[a] && !free_[b]) continue;
+                    const Vec3 d = pos_[b] - pos_[a];
+                    const double len = norm(d);
+                    // The new element's pairs get `distance`; a pair already there keeps
+                    // what it had, the hard core at least.
+                    const double want = a == 0 ? distance : std::min(distance, std::max(core_, norm(from_[b] - from_[a])));
+                    if (len >= want) continue;
+                    crowded = true;
+                    const Vec3 dir = len > 1e-12 * core_ ? d / len : Vec3{1.0, 0.0, 0.0};
+                    const double share = free_[a] && free_[b] ? 0.5 : 1.0;
+                    const Vec3 step = dir * ((want * (1.0 + 1e-9) - len) * share);
+                    if (free_[a]) move_pushed(a, pos_[a] - step);
+                    if (free_[b]) move_pushed(b, pos_[b] + step);
+                }
+            if (!crowded) return true;
+        }
+        return false;
+    }
+
+    void move_pushed(int k, Vec3 to) {
+        g_.keep_on_layer(pos_[k], to);
+        if (g_.metric.dimension == 2) to.z = 0.0;
+        pos_[k] = to;
+    }
+
     // The elements e overlaps, in overlapped_; false when one of them may not be removed or
     // they take more room than kRoomRatio times e's.
     bool overlapped(const OutElement& e) {
         overlapped_.clear();
+        room_ = 0.0;
+        return overlapped_at(e.p, -1, kRoomRatio * room_of(g_, t_));
+    }
+
+    // Element `pushed` (of the type) at p: the elements other than the type's it overlaps
+    // there added to overlapped_, each at most once; false as overlapped's. Each pushed
+    // element may clear kRoomRatio times its room more.
+    bool overlapped_by(int pushed, const Vec3& p) {
+        const OutElement& o = g_.out[pushed];
+        g_.sample_positions(o.kept, o.source, o.frame, p, mine_);
+        return overlapped_at(p, pushed, kRoomRatio * room_of(g_, t_) * static_cast<double>(2 + pushed_.size()));
+    }
+
+    bool overlapped_at(const Vec3& p, int self, double allowed) {
         g_.grid.query(
-            e.p, reach_, [&](int j) { return g_.out[j].p; }, near_);
-        double room = 0.0;
-        const double allowed = kRoomRatio * room_of(g_, t_);
+            p, reach_, [&](int j) { return g_.out[j].p; }, near_);
         for (const int j : near_) {
-            if (is_removed(j)) continue;
+            if (j == self || is_removed(j)) continue;
+            if (std::find(overlapped_.begin(), overlapped_.end(), j) != overlapped_.end()) continue;
             const OutElement& o = g_.out[j];
-            bool hit = norm(o.p - e.p) < g_.hard_core(t_, o.type);
+            if (squeeze_ && o.type == t_) continue;  // make_room kept the type's own core
+            bool hit = norm(o.p - p) < g_.hard_core(t_, o.type);
             if (!hit && g_.bounds.has_samples) {
                 g_.sample_positions(o.kept, o.source, o.frame, o.p, theirs_);
                 const double core2 = g_.sample_core(t_, o.type) * g_.sample_core(t_, o.type);
@@ -124,8 +239,8 @@ private:
             }
             if (!hit) continue;
             if (j < first_ || o.locked || rare_[o.type]) return false;
-            room += room_of(g_, o.type);
-            if (room > allowed) return false;
+            room_ += room_of(g_, o.type);
+            if (room_ > allowed) return false;
             overlapped_.push_back(j);
         }
         return true;
@@ -136,7 +251,14 @@ private:
     const Domain& region_;
     const std::vector<char>& rare_;  // per type: rare, never removed (a glass took its plate)
     std::vector<char>& removed_;  // per element from first_ on
-    double reach_ = 0.0, spread_ = 1.0;
+    double reach_ = 0.0, spread_ = 1.0, core_ = 0.0, room_ = 0.0;
+    bool squeeze_ = false;  // the type's own elements pushed to make room (kSqueeze)
+    // make_room's local state: the type's elements around the site (the new element first,
+    // id -1), their places during and before the sweeps, whether each may move; and the
+    // elements it moves with their new places.
+    std::vector<int> ids_, pushed_;
+    std::vector<Vec3> pos_, from_, pushed_to_;
+    std::vector<char> free_;
     int t_ = 0;
     core::DynamicGrid own_;  // the type's elements
     std::vector<int> near_, overlapped_;
@@ -145,18 +267,19 @@ private:
 
 }  // namespace
 
-int complete_rare_types(Grower::Impl& g, int first, const Domain& region, int& removed) {
-    removed = 0;
+TypeCompletion complete_rare_types(Grower::Impl& g, int first, const Domain& region) {
+    TypeCompletion result;
     const size_t types = g.exemplar.types.size();
-    if (types < 2 || g.exemplar.elements.empty()) return 0;
+    result.completed.assign(types, 0);
+    if (types < 2 || g.exemplar.elements.empty()) return result;
     std::vector<double> share(types, 0.0);
     for (const Element& e : g.exemplar.elements) share[e.type] += 1.0 / static_cast<double>(g.exemplar.elements.size());
     std::vector<char> rare(types, 0), gone(g.out.size() - first, 0);
     for (size_t t = 0; t < types; ++t) rare[t] = share[t] > 0.0 && share[t] < kRareShare;
     RareInsertion insertion(g, first, region, rare, gone);
-    int inserted = 0;
     for (size_t t = 0; t < types; ++t) {
-        if (!rare[t]) continue;
+        const bool minority = !g.bounds.has_samples && share[t] < kMinorityShare;
+        if (!rare[t] && !minority) continue;
         int have = 0, total = 0;
         for (size_t k = 0; k < gone.size(); ++k) {
             if (gone[k]) continue;
@@ -165,11 +288,14 @@ int complete_rare_types(Grower::Impl& g, int first, const Domain& region, int& r
         }
         const double expected = share[t] * total;
         if (!(have < kRareShortfall * expected)) continue;
-        inserted += insertion.insert(static_cast<int>(t), static_cast<int>(std::lround(expected)) - have);
+        const int added = insertion.insert(static_cast<int>(t), static_cast<int>(std::lround(expected)) - have);
+        result.completed[t] = added > 0;
+        result.inserted += added;
+        if (!rare[t]) result.squeezed += added;
     }
-    removed = static_cast<int>(std::count(gone.begin(), gone.end(), 1));
-    if (removed > 0) g.remove_and_renumber(first, gone);
-    return inserted;
+    result.removed = static_cast<int>(std::count(gone.begin(), gone.end(), 1));
+    if (result.removed > 0) g.remove_and_renumber(first, gone);
+    return result;
 }
 
 }  // namespace tessera::grow

@@ -8,7 +8,16 @@
 // overproduced them. Once a region is covered, a rare type clearly short of its share in
 // what the call grew gets its missing elements where its own elements are farthest apart,
 // each taking the place of the call's unlocked elements it overlaps.
+//
+// A minority type (under half of the exemplar) can fall short for another reason: growth
+// packs it as random sequential adsorption does, and the exemplar's is packed denser. The
+// stones of a two-class pattern (22 among 90 pebbles) grew at 0.17 per unit area against the
+// exemplar's 0.19 (its interior) to 0.22 (the whole box), a share of 0.154 against 0.196, and
+// no place was left where a stone's hard core held. Such a type's elements are inserted
+// where its own stand kSqueeze of the hard core apart, the nearest pushed out.
 #pragma once
+
+#include <vector>
 
 #include "grow/grow_state.hpp"
 
@@ -16,15 +25,28 @@ namespace tessera::grow {
 
 // Types whose exemplar share is under this are rare.
 constexpr double kRareShare = 0.10;
+// Single-sample types whose exemplar share is under this (a minority: the stones among
+// pebbles) are completed too, their own elements pushed to make room (rare_types.cpp).
+constexpr double kMinorityShare = 0.5;
 // A rare type is completed when the call grew fewer than this share of its expected count.
 constexpr double kRareShortfall = 0.90;
 
-// For each rare type short of its share among elements [first, end) of `region`: inserts
-// elements of it up to its expected count (the share times the call's count), farthest from
-// the type's elements first, removing the unlocked elements of [first, end) of common types
-// they overlap (no more of them than take about the room of the inserted element). A site
-// whose element would leave the region, or overlap a locked element or one of a rare type,
-// is passed over. Returns how many were inserted; `removed` gets how many were removed.
-int complete_rare_types(Grower::Impl& g, int first, const Domain& region, int& removed);
+// What complete_rare_types did.
+struct TypeCompletion {
+    int inserted = 0;  // elements inserted
+    int squeezed = 0;  // of them, of a minority type whose own elements were pushed
+    int removed = 0;   // elements of other types removed where they went
+    std::vector<char> completed;  // per type: whether elements of it were inserted
+};
+
+// For each rare type, and each minority type of single-sample elements, short of its share
+// among elements [first, end) of `region`: inserts elements of it up to its expected count
+// (the share times the call's count), farthest from the type's elements first, removing the
+// unlocked elements of [first, end) of other types they overlap (no more of them than take
+// about the room of the inserted element). A minority type's elements go where its own are
+// kSqueeze of its hard core away or more, those of the call pushed out (by at most kMaxPush
+// hard cores). A site whose element would leave the region, or overlap a locked element or
+// one of a rare type, is passed over.
+TypeCompletion complete_rare_types(Grower::Impl& g, int first, const Domain& region);
 
 }  // namespace tessera::grow

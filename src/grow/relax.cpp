@@ -24,11 +24,11 @@ bool near_outside(const Grower::Impl& g, int i, const Domain& region, double dis
 
 }  // namespace
 
-void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, GrowReport& out) {
+void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, GrowReport& out, int extra_sweeps) {
     if (!g.relaxation || !g.relaxation->applies()) return;
     // Outside elements are not in the relaxation's sums or its hard-core checks: an element
     // that could come within the largest hard core of one in its sweeps stays.
-    const int sweeps = g.relax_sweeps;
+    const int sweeps = g.relax_sweeps + extra_sweeps;
     const double drift = sweeps * g.relaxation->max_step(), seam = drift + g.reach;
     const double edge_band = std::max(2.0 * drift, g.metric.params.spacing);
     Arrangement a;

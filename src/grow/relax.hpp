@@ -22,7 +22,8 @@ namespace tessera::grow {
 // relaxation). Then, as synthesize_det's final passes, a crowding repair of the moved
 // elements (the relaxation keeps the closest pair, not the exemplar's share of close pairs)
 // and the holes it opened filled. Adds the moves kept to report.relaxed, the holes filled
-// to report.filled and report.added.
-void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, GrowReport& report);
+// to report.filled and report.added. `extra_sweeps` are added to the grower's sweeps (when it
+// has any).
+void relax_pair_correlation(Grower::Impl& g, const Domain& region, int first, GrowReport& report, int extra_sweeps = 0);
 
 }  // namespace tessera::grow

@@ -167,7 +167,9 @@ TEST(Grow, TwoClassGrownTo20TimesItsAreaKeepsSharesPcfAndHolesNearSynthesizeDets
     Arrangement det = synthesize_det(ex, region);
     out.domain = region;  // holes are measured inside the region grown
     const std::vector<double> want = type_shares(ex.elements, 2), got = type_shares(out.elements, 2);
-    for (int t = 0; t < 2; ++t) EXPECT_NEAR(got[t], want[t], 0.05) << ex.types[t].name << " share";
+    // Within 5% of each share (stones 0.191-0.198 of the exemplar's 0.196 over seeds 1-6;
+    // 0.146-0.158 before the minority completion of grow/rare_types.hpp).
+    for (int t = 0; t < 2; ++t) EXPECT_NEAR(got[t], want[t], 0.05 * want[t]) << ex.types[t].name << " share";
     const double e_grow = pcf_relative_error(ex, out), e_det = pcf_relative_error(ex, det);
     EXPECT_LT(e_grow, 1.6 * e_det + 0.02) << "grow " << e_grow << ", synthesize_det " << e_det;
     expect_no_hole(ex, out, "two class at 20x");
