@@ -355,8 +355,10 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
     const double reach = g.metric.patch_radius + g.metric.params.radius;
     int seeded = 0;
     if (g.out.empty()) seed(region.closest_inside(region.bounds().center()));
+    size_t start = g.out.size();  // the call's elements: from here on
     if (g.seed_pending) {  // the seed patches, kept where they fit the region
         const int first = g.round_first.back(), n = static_cast<int>(g.out.size());
+        start = static_cast<size_t>(first);  // the call made them
         std::vector<char> keep(n - first);
         std::vector<Vec3> samples;
         for (int i = first; i < n; ++i)
@@ -379,13 +381,12 @@ GrowReport Grower::grow(const Domain& region, RegionEdge edge) {
     extend(g.grown, g.has_bounds, region.bounds());
     const double per_element = g.exemplar.domain.measure() / std::max<size_t>(1, g.exemplar.elements.size());
     const double expected = region.measure() / per_element;
-    const size_t start = g.out.size();
     grow::RoundLimits limits;
     limits.region = &region;
     GrowReport report = run_rounds(
         g, limits, [](const GrowReport&) { return false; },
         [&](const GrowReport&) {
-            return 0.99 * std::min(1.0, (g.out.size() - start) / std::max(1.0, expected));
+            return 0.99 * std::min(1.0, (g.out.size() - start - seeded) / std::max(1.0, expected));
         },
         seeded, false);
     // Covered: the last two rounds are enclosed now (by later elements or the region's outside).
