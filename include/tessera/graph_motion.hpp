@@ -70,8 +70,13 @@ struct GraphMotionStats {
 
 // The still as an animation of options.frames frames whose frame 0 is the still (its
 // elements, ids and structure kept; time stamps from the samples' time, one unit apart).
+// A still with multi-sample elements (threads, sheets, rigid bodies) moves on two levels:
+// the elements' centroids as above, each element's shape along an annealed path through
+// the graph of the still's element shapes (threads and sheets kept at their rest lengths,
+// rigid elements turned only); see docs/dynamic.md.
 // Throws Error(option) naming the field for a bad option (graph_motion_option_table),
-// Error(input) for an invalid still, one with multi-sample elements or fewer than 2 samples.
+// Error(input) for an invalid still, or one with fewer than 2 samples (2 elements when some
+// element has several samples).
 Animation enrich_by_graph(const Exemplar& still, const GraphMotionOptions& options = {},
                           GraphMotionStats* stats = nullptr);
 

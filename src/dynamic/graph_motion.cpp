@@ -1,7 +1,8 @@
 // dynamic/graph_motion.cpp — graph synthesis (section 4.3): a still exemplar enriched with
 // motion. The graph of its neighbourhoods (graph_nodes), a motion path per sample
 // (graph_path, Eq. 13), the neighbourhood blended along it (path_blend) and the positions
-// solved frame by frame (graph_solve, Eq. 7).
+// solved frame by frame (graph_solve, Eq. 7). A still of threads, sheets or rigid
+// multi-sample elements goes through graph_shapes.hpp instead.
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -9,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "dynamic/graph_nodes.hpp"
 #include "dynamic/graph_path.hpp"
+#include "dynamic/graph_shapes.hpp"
 #include "dynamic/graph_solve.hpp"
 #include "dynamic/path_blend.hpp"
 #include "tessera/error.hpp"
@@ -27,9 +29,6 @@ using namespace dynamic;
 constexpr double frame_time = 1.0;
 
 void check_still(const Exemplar& still) {
-    still.validate("exemplar");
-    if (still.has_multi_sample_elements())
-        throw Error(ErrorKind::input, "exemplar: graph synthesis takes single-sample elements (particles, agents)");
     if (still.samples.size() < 2) throw Error(ErrorKind::input, "exemplar: graph synthesis needs at least 2 elements");
 }
 
@@ -99,9 +98,16 @@ void predict_frame(const std::vector<PathTracks>& tracks, const std::vector<Spli
 
 Animation enrich_by_graph(const Exemplar& still, const GraphMotionOptions& options, GraphMotionStats* stats_out) {
     check_options(graph_motion_option_table(), options);
-    check_still(still);
+    still.validate("exemplar");
     const auto start = std::chrono::steady_clock::now();
     GraphMotionStats stats;
+    if (still.has_multi_sample_elements()) {  // threads, sheets, rigid bodies: dynamic/graph_shapes.hpp
+        Animation result = enrich_elements_by_graph(still, options, stats);
+        stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (stats_out) *stats_out = stats;
+        return result;
+    }
+    check_still(still);
     Animation result = animation_from_exemplar(still, still.samples.front().time);
     const StParams params = graph_params(still, options);
     const InputFrames frames(result, params, options.threads);

@@ -99,4 +99,16 @@ NeighbourhoodGraph::NeighbourhoodGraph(const InputFrames& frames, const StParams
     });
 }
 
+NeighbourhoodGraph::NeighbourhoodGraph(int n, std::vector<double> weights, int k, int threads)
+    : samples_(n), d_(std::move(weights)) {
+    column_.resize(n);
+    for (int s = 0; s < n; ++s) pool_.push_back(s), column_[s] = s;
+    for (double w : d_)
+        if (std::isfinite(w)) delta_ = std::max(delta_, w);
+    nearest_.resize(n);
+    core::parallel_for(n, threads, [&](int begin, int end, int) {
+        for (int a = begin; a < end; ++a) nearest_[a] = k_nearest(*this, a, k, pool_);
+    });
+}
+
 }  // namespace tessera::dynamic

@@ -32,6 +32,10 @@ class NeighbourhoodGraph {
 public:
     NeighbourhoodGraph(const InputFrames& frames, const StParams& params, int max_nodes, int k, std::uint64_t seed,
                        int threads);
+    // A complete graph over n nodes from their edge weights (n x n, row-major, symmetric;
+    // infinite between nodes that may not be joined): the element shapes of a still of
+    // threads, sheets or rigid elements (graph_shapes.hpp).
+    NeighbourhoodGraph(int n, std::vector<double> weights, int k, int threads);
 
     int samples() const { return samples_; }
     // The nodes (samples) a path may pass through, ascending.
