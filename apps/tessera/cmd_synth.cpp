@@ -69,8 +69,10 @@ std::string methods_with(const SynthArgs& args, const std::string& flag) {
 // Checks every flag that does not need the input, naming the flag and its value, and
 // stores the method's options.
 void check_options(SynthArgs& args) {
-    // An INPUT with frames is animated: the dynamic method, unless --method says otherwise.
-    if (args.method_option->count() == 0 && tessera::has_frames(args.input)) args.method = "dynamic";
+    // An INPUT with frames is animated, and --coarse asks for motion: the dynamic method,
+    // unless --method says otherwise.
+    if (args.method_option->count() == 0 && (tessera::has_frames(args.input) || !args.coarse.empty()))
+        args.method = "dynamic";
     if (args.method != "det" && args.method != "pcf" && args.method != "dynamic")
         fail_option("--method must be det, pcf or dynamic, got '" + args.method + "'");
     const MethodOptions& method = args.method == "pcf"       ? args.pcf_options

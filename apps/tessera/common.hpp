@@ -151,6 +151,7 @@ Subcommand add_edit_command(CLI::App& app);
 Subcommand add_scene_command(CLI::App& app);
 Subcommand add_analyze_command(CLI::App& app);
 Subcommand add_recombine_command(CLI::App& app);
+Subcommand add_animate_command(CLI::App& app);
 Subcommand add_grow_command(CLI::App& app);
 Subcommand add_brush_command(CLI::App& app);
 Subcommand add_world_command(CLI::App& app);

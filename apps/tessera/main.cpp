@@ -92,8 +92,8 @@ int main(int argc, char** argv) {
 
     const Subcommand commands[] = {add_synth_command(app), add_metrics_command(app), add_render_command(app),
                                     add_edit_command(app), add_scene_command(app), add_analyze_command(app),
-                                    add_recombine_command(app), add_grow_command(app), add_world_command(app),
-                                    add_brush_command(app), add_studio_command(app)};
+                                    add_recombine_command(app), add_animate_command(app), add_grow_command(app),
+                                    add_world_command(app), add_brush_command(app), add_studio_command(app)};
 
     try {
         app.parse(argc, argv);

@@ -73,8 +73,9 @@ void run_dynamic(const DynamicRun& run, StatusPrinter& status,
         load_options.input_domain = tessera::parse_box_domain(run.input_domain, "--input-domain");
     const tessera::Animation exemplar = status.step(
         "reading " + run.input, [&] { return tessera::load_animation(run.input, load_options); });
-    // A still gets its frames from graph synthesis (--graph-frames) before the window applies.
-    const int graph_frames = run.coarse.empty() ? tessera::graph_frames_for(exemplar, run.options) : 0;
+    // A still gets its frames from graph synthesis (--graph-frames) before the window applies,
+    // also on a coarse motion (its detail motion then comes from the enriched still).
+    const int graph_frames = tessera::graph_frames_for(exemplar, run.options);
     const int frames = graph_frames > 0 ? graph_frames : exemplar.frame_count();
     if (run.options.temporal_size > frames)
         fail_option("--temporal-size must be at most the exemplar's frame count (" + std::to_string(frames) +

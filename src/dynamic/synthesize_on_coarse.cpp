@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/parallel.hpp"
@@ -13,6 +14,7 @@
 #include "dynamic/detail_patches.hpp"
 #include "dynamic/element_contacts.hpp"
 #include "dynamic/element_lengths.hpp"
+#include "dynamic/graph_exemplar.hpp"
 #include "dynamic/local_frames.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -176,8 +178,13 @@ std::vector<std::vector<GridOffset>> offsets_by_type(const Exemplar& data, const
 
 }  // namespace
 
-AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animation& coarse,
+AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation& coarse,
                                          const DynamicOptions& options, const Progress& progress) {
+    // A still (one frame: a traced photo of branches, Figure 12) gets its detail motion by
+    // graph synthesis first (graph_shapes.hpp), as frame-by-frame synthesis does for particles.
+    std::optional<Animation> enriched;
+    std::vector<std::string> graph_notes;
+    const Animation& exemplar = exemplar_with_motion(given, options, enriched, graph_notes);
     check_inputs(exemplar, coarse, options);
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -255,6 +262,7 @@ AnimatedArrangement synthesize_on_coarse(const Animation& exemplar, const Animat
         result.stats.notes.push_back(std::to_string(contacts.bound_hits) + " frames stopped at the bound of " +
                                      std::to_string(contact_sweeps) + " contact sweeps (largest gap left " +
                                      std::to_string(contacts.worst_gap) + ")");
+    result.stats.notes.insert(result.stats.notes.begin(), graph_notes.begin(), graph_notes.end());
     result.stats.final_energy = result.stats.energy.empty() ? 0.0 : result.stats.energy.back();
     result.stats.total_seconds = elapsed();
     if (progress) progress(ProgressEvent{"done", options.iterations - 1, options.iterations, result.stats.final_energy,

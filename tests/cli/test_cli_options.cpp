@@ -8,6 +8,7 @@
 #include "cli_fixture.hpp"
 #include "tessera/det.hpp"
 #include "tessera/dynamic.hpp"
+#include "tessera/graph_motion.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/motion_analysis.hpp"
 #include "tessera/option_table.hpp"
@@ -79,6 +80,10 @@ TEST_F(CliOptions, EveryDynamicOptionIsAFlagWithItsDefaultDocsAndCheck) {
 
 TEST_F(CliOptions, EveryLowPassOptionIsAFlagWithItsDefaultDocsAndCheck) {
     walk(tessera::low_pass_option_table(), "analyze", "--decompose");
+}
+
+TEST_F(CliOptions, EveryGraphMotionOptionIsAFlagWithItsDefaultDocsAndCheck) {
+    walk(tessera::graph_motion_option_table(), "animate", "");
 }
 
 TEST_F(CliOptions, EveryGrowOptionIsAFlagWithItsDefaultDocsAndCheck) {

@@ -53,7 +53,7 @@ TEST_F(CliUsage, UnknownCommandFarFromAllHasNoSuggestion) {
 }
 
 TEST_F(CliUsage, MissingCommandListsThem) {
-    expect_one_line_error(run(""), "a command is required: synth, metrics, render, edit, scene, analyze, recombine, grow, world, brush or studio");
+    expect_one_line_error(run(""), "a command is required: synth, metrics, render, edit, scene, analyze, recombine, animate, grow, world, brush or studio");
 }
 
 TEST_F(CliUsage, UnknownOptionSuggestsTheClosest) {

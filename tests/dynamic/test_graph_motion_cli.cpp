@@ -1,6 +1,7 @@
 // `tessera synth STILL --method dynamic`: a static exemplar gets its motion from graph
 // synthesis (--graph-frames, automatic for one frame) and is then synthesized frame by frame;
-// --graph-frames 0 keeps the old refusal, a bad value names the flag.
+// --graph-frames 0 keeps the old refusal, a bad value names the flag. `tessera animate` does
+// the graph synthesis alone.
 #include <gtest/gtest.h>
 
 #include "cli/cli_fixture.hpp"
@@ -54,6 +55,31 @@ TEST_F(GraphMotionCli, BadGraphFramesNameTheFlagAndWriteNothing) {
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err.rfind("tessera: error: --temporal-size must be at most the exemplar's frame count (1), got 3", 0), 0u)
         << r.err;
+    EXPECT_TRUE(work_files().empty());
+}
+
+// `tessera animate`: graph synthesis alone, for particles and for threads.
+TEST_F(GraphMotionCli, AnimateWritesTheStillWithMotion) {
+    Result r = run("animate '" + example("noodles_2d.json") + "' -o '" + path("noodles.json") + "' --frames 8");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("animate: 70 elements x 8 frames"), std::string::npos) << r.err;
+    const tessera::Animation out = tessera::load_animation(path("noodles.json"));
+    ASSERT_EQ(out.frame_count(), 8);
+    double moved = 0.0;
+    for (int s = 0; s < out.sample_count(); ++s) moved += tessera::norm(out.at(7, s) - out.at(0, s));
+    EXPECT_GT(moved / out.sample_count(), 0.02);
+    r = run("animate '" + still() + "' -o '" + path("dots.png") + "' --frames 4 -q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+TEST_F(GraphMotionCli, AnimateNamesABadFlagAndWritesNothing) {
+    Result r = run("animate '" + still() + "' -o '" + path("out.json") + "' --frames 1");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.rfind("tessera: error: --frames", 0), 0u) << r.err;
+    r = run("animate '" + still() + "' -o '" + path("out.txt") + "'");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("-o"), std::string::npos) << r.err;
     EXPECT_TRUE(work_files().empty());
 }
 
