@@ -1,10 +1,13 @@
 // The motion analysis for Python (tessera/motion_analysis.hpp; Dynamic Element Textures,
 // section 5): decompose_motion with its options as a dict keyed by the Python keywords
-// (checked by low_pass_option_table), recombine_motion; the GIL released while they work.
+// (checked by low_pass_option_table), recombine_motion; and graph synthesis of a still
+// (section 4.3, tessera/graph_motion.hpp, graph_motion_option_table); the GIL released while
+// they work.
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "option_table.hpp"
+#include "tessera/graph_motion.hpp"
 #include "tessera/motion_analysis.hpp"
 
 namespace py = pybind11;
@@ -28,9 +31,17 @@ tessera::Animation recombine(const tessera::Animation& coarse, const tessera::An
     return tessera::recombine_motion(coarse, detail);
 }
 
+tessera::Animation animate(const tessera::Exemplar& still, const py::dict& options) {
+    tessera::GraphMotionOptions o;
+    apply_keywords(tessera::graph_motion_option_table(), o, options, still.dimension, "animate");
+    py::gil_scoped_release release;
+    return tessera::enrich_by_graph(still, o);
+}
+
 }  // namespace
 
 void bind_motion(py::module_& m) {
+    m.def("enrich_by_graph", &animate, py::arg("still"), py::arg("options"));
     m.def("decompose_motion", &decompose, py::arg("animation"), py::arg("options"));
     m.def("recombine_motion", &recombine, py::arg("coarse"), py::arg("detail"));
 }

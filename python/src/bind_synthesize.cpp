@@ -17,6 +17,7 @@
 #include "tessera/det.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/edit.hpp"
+#include "tessera/graph_motion.hpp"
 #include "tessera/option_text.hpp"
 #include "tessera/grow.hpp"
 #include "tessera/metrics.hpp"
@@ -132,6 +133,7 @@ void bind_synthesize(py::module_& m) {
             tables["edit"] = describe_table(tessera::edit_option_table());  // `tessera edit` (no Python call yet)
             tables["analyze"] = describe_table(tessera::pcf_analysis_option_table());  // tessera.analyze
             tables["low_pass"] = describe_table(tessera::low_pass_option_table());  // tessera.decompose
+            tables["graph_motion"] = describe_table(tessera::graph_motion_option_table());  // tessera.animate
             // tessera.pair_correlation and tessera.metrics (`analyze --standard-pcf`, `metrics`)
             tables["pair_correlation"] = describe_table(tessera::pair_correlation_option_table());
             return tables;

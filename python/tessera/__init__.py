@@ -38,7 +38,7 @@ __version__ = _tessera.version
 __all__ = [
     "AnimatedArrangement", "Animation", "Arrangement", "BrushCanvas", "Cancelled", "Domain", "DomainError",
     "Exemplar", "FileError", "Grower", "InputError", "InternalError", "OptionError", "PcfModel", "TesseraError",
-    "analyze", "animation", "brush", "decompose", "exemplar", "load", "load_animation", "metrics", "pair_correlation",
+    "analyze", "animate", "animation", "brush", "decompose", "exemplar", "load", "load_animation", "metrics", "pair_correlation",
     "recombine", "render", "save", "save_animation", "synthesize",
 ]
 
@@ -145,6 +145,23 @@ def recombine(coarse, detail):
     count are resampled linearly along their index. Either may be a path. InputError when the
     detail has no element of a kind coarse has, or another dimension."""
     return _tessera.recombine_motion(_as_animation(coarse, "coarse"), _as_animation(detail, "detail"))
+
+
+def animate(still, **options):
+    """Motion for a still by graph synthesis (`tessera animate`; Dynamic Element Textures,
+    section 4.3): an Animation of `frames` frames whose frame 0 is the still. Particles walk
+    annealed paths through the graph of the still's neighbourhoods; threads, sheets and rigid
+    multi-sample elements through the graph of its element shapes, their centroids as
+    particles, threads and sheets held to their rest lengths and apart, rigid elements turned
+    only. still may be a path (of an animation, its first frame is taken). See
+    docs/dynamic.md, "Graph synthesis (motion from a still)"."""
+    _options.check_keywords("animate", options, ("graph_motion",))
+    if isinstance(still, Animation):
+        still = still.frame(0)
+    return _tessera.enrich_by_graph(_as_data(still), options)
+
+
+_options.with_signature(animate, ("still",), ("graph_motion",))
 
 
 def _as_animation(data, name):

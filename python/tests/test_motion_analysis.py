@@ -90,3 +90,22 @@ def test_the_docs_example_runs(tmp_path):
     alone = tessera.load_animation(tmp_path / "swirl_details.json")
     assert alone.frame_count == 32
     assert np.allclose(alone.positions, scope["coarse"].positions[:1] + scope["detail"].positions)
+
+
+def test_animate_gives_a_still_of_threads_motion_with_frame_zero_the_still():
+    still = tessera.load(ROOT / "examples" / "noodles_2d.json")
+    clip = tessera.animate(still, frames=8, threads=2)
+    assert clip.frame_count == 8
+    first = tessera.animate(ROOT / "examples" / "noodles_2d.json", frames=8, threads=1)
+    assert np.array_equal(clip.positions, first.positions)  # any thread count, a path or an exemplar
+    assert np.array_equal(clip.positions[0], first.positions[0])
+    moved = np.linalg.norm(clip.positions[-1] - clip.positions[0], axis=1).mean()
+    assert moved > 0.02
+    assert list(inspect.signature(tessera.animate).parameters)[:4] == ["still", "seed", "threads", "frames"]
+
+
+def test_animate_names_bad_keywords():
+    with pytest.raises(tessera.OptionError, match="^frames must be an integer from 2"):
+        tessera.animate(ROOT / "examples" / "poisson_disk_2d.json", frames=1)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'frame'"):
+        tessera.animate(ROOT / "examples" / "poisson_disk_2d.json", frame=3)
