@@ -77,9 +77,10 @@ struct DynamicOptions {
     // exemplar's closest-pair distance without gravity, which pushes apart the ones that
     // collided and out of the domain's obstacles the ones that went into them.
     bool physics = false;
-    // Graph synthesis (section 4.3, tessera/graph_motion.hpp): motion for a still. -1 =
-    // automatic (a one-frame exemplar is enriched to 24 frames), 0 = off, N >= 2 = the
-    // exemplar's frame 0 is enriched to N frames (its own motion, if any, is set aside).
+    // Graph synthesis (section 4.3, tessera/graph_motion.hpp): motion for a still, more for a
+    // short clip. -1 = automatic (a one-frame exemplar is enriched to 24 frames), 0 = off,
+    // N >= 2 = the exemplar continued to N frames (extend_by_graph: a clip of F < N frames
+    // keeps its own and walks on from its last frame; one of N frames or more is kept).
     int graph_frames = -1;
     // All-frame synthesis on a coarse motion (synthesize_on_coarse): the width of the grid
     // neighbourhood of threads and sheets in samples (half-width size / 2: 7 = the paper's 7 x 7), and how the

@@ -80,6 +80,16 @@ struct GraphMotionStats {
 Animation enrich_by_graph(const Exemplar& still, const GraphMotionOptions& options = {},
                           GraphMotionStats* stats = nullptr);
 
+// A short clip (an animation of F frames) continued to options.frames frames by graph
+// synthesis: frames 0 .. F - 1 are the clip's, the later ones walk every sample's path from
+// its neighbourhood at the clip's last frame through the graph of the neighbourhoods of all
+// the clip's frames (a still is a clip of one frame: enrich_by_graph), at the clip's frame
+// interval (one unit for a still). Threads, sheets and rigid elements continue from the
+// last frame's shapes. A clip of options.frames frames or more is returned as it is.
+// Throws as enrich_by_graph, naming the exemplar.
+Animation extend_by_graph(const Animation& clip, const GraphMotionOptions& options = {},
+                          GraphMotionStats* stats = nullptr);
+
 // One row per GraphMotionOptions field (tessera/option_table.hpp).
 const OptionTable<GraphMotionOptions>& graph_motion_option_table();
 

@@ -29,8 +29,9 @@ namespace dynamic {
 OptionSpec<DynamicOptions> graph_frames_row() {
     OptionSpec<DynamicOptions> row = options::integer_row<DynamicOptions>(
         "graph_frames",
-        "Graph synthesis (motion for a still, section 4.3): frames the exemplar's frame 0 is enriched to before "
-        "synthesis; -1 = automatic (24 for a one-frame exemplar, else off), 0 = off.",
+        "Graph synthesis (section 4.3): frames the exemplar is continued to before synthesis, a still given "
+        "motion, a short clip continued from its last frame through the neighbourhoods of all its frames; -1 = "
+        "automatic (24 for a one-frame exemplar, else off), 0 = off.",
         [](auto& o) -> auto& { return o.graph_frames; }, options::between(-1, 100000));
     row.set = [set = row.set](DynamicOptions& o, const OptionValue& v, const OptionContext& context) {
         if (std::get<std::int64_t>(v) == 1) throw Error(ErrorKind::option, refused_one(context.as_written));
@@ -55,13 +56,18 @@ const Animation& exemplar_with_motion(const Animation& given, const DynamicOptio
     graph.seed = options.seed;
     graph.threads = options.threads;
     GraphMotionStats stats;
-    storage = enrich_by_graph(given.frame(0), graph, &stats);
+    if (frames <= given.frame_count()) {
+        notes.push_back("graph synthesis: the exemplar has " + std::to_string(given.frame_count()) +
+                        " frames, graph_frames " + std::to_string(frames) + " adds none");
+        return given;
+    }
+    storage = extend_by_graph(given, graph, &stats);
     char line[240];
     std::snprintf(line, sizeof line,
-                  "graph synthesis gave the still %d frames (%d paths of %.1f steps on average, mean motion %.3f "
+                  "graph synthesis gave the %s %d frames (%d paths of %.1f steps on average, mean motion %.3f "
                   "spacings per frame, %.2f s)",
-                  frames, given.sample_count() - stats.still_samples, stats.path_steps, stats.mean_speed,
-                  stats.seconds);
+                  given.frame_count() == 1 ? "still" : "clip", frames, given.sample_count() - stats.still_samples,
+                  stats.path_steps, stats.mean_speed, stats.seconds);
     notes.push_back(line);
     notes.insert(notes.end(), stats.notes.begin(), stats.notes.end());
     return *storage;

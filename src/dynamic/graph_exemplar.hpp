@@ -19,9 +19,9 @@ OptionSpec<DynamicOptions> graph_frames_row();
 // directly, past the row's setter).
 void check_graph_frames(const DynamicOptions& options);
 
-// The exemplar frame-by-frame synthesis works on: `given` itself, or (graph_frames_for > 0)
-// its frame 0 enriched by graph synthesis with the run's radius, seed and threads, kept in
-// `storage`; a line for the run's notes says so.
+// The exemplar synthesis works on: `given` itself, or (graph_frames_for > 0 and more than
+// its frames) it continued by graph synthesis (extend_by_graph) with the run's radius, seed
+// and threads, kept in `storage`; a line for the run's notes says so.
 const Animation& exemplar_with_motion(const Animation& given, const DynamicOptions& options,
                                       std::optional<Animation>& storage, std::vector<std::string>& notes);
 

@@ -47,10 +47,11 @@ StParams graph_params(const Exemplar& still, const GraphMotionOptions& options) 
     return p;
 }
 
-// Every sample's motion path and the tracks of its neighbours along it.
+// Every sample's motion path, from its node at the clip's last frame (nodes: every frame's
+// sample neighbourhoods), and the tracks of its neighbours along it.
 std::vector<PathTracks> plan_paths(const InputFrames& frames, const NeighbourhoodGraph& graph, const StParams& params,
                                    const GraphMotionOptions& options, GraphMotionStats& stats) {
-    const int n = frames.size();
+    const int n = frames.size() / frames.frame_count(), last = n * (frames.frame_count() - 1);
     std::vector<MotionPath> paths(n);
     std::vector<PathTracks> tracks(n);
     std::vector<MetricScratch> scratch(core::resolve_threads(options.threads));
@@ -60,9 +61,9 @@ std::vector<PathTracks> plan_paths(const InputFrames& frames, const Neighbourhoo
                                   options.seed};
     core::parallel_for(n, options.threads, [&](int begin, int end, int thread) {
         for (int s = begin; s < end; ++s) {
-            paths[s] = anneal_path(graph, s, settings);
-            tracks[s] = path_tracks(frames, spatial_neighbourhood(frames, s, params.radius), paths[s].nodes, params,
-                                    scratch[thread]);
+            paths[s] = anneal_path(graph, last + s, settings);
+            tracks[s] = path_tracks(frames, spatial_neighbourhood(frames, last + s, params.radius), paths[s].nodes,
+                                    params, scratch[thread]);
         }
     });
     int with_path = 0;
@@ -80,15 +81,16 @@ std::vector<PathTracks> plan_paths(const InputFrames& frames, const Neighbourhoo
     return tracks;
 }
 
-// Each sample's predicted neighbour offsets at frame f: its tracks blended at u = n f / (F - 1),
-// so every path is walked from s_a (frame 0: the still) to s_b (the last frame).
+// Each sample's predicted neighbour offsets at the f-th new frame of `steps`: its tracks
+// blended at u = n f / steps, so every path is walked from s_a (the clip's last frame: a
+// still's only one) to s_b (the last new frame).
 void predict_frame(const std::vector<PathTracks>& tracks, const std::vector<SplineBlend>& splines,
-                   const FrameSolver& solver, int f, int frames, int threads, std::vector<Vec3>& predicted) {
+                   const FrameSolver& solver, int f, int steps, int threads, std::vector<Vec3>& predicted) {
     core::parallel_for(static_cast<int>(tracks.size()), threads, [&](int begin, int end, int) {
         double w[max_path_steps + 1];
         for (int s = begin; s < end; ++s) {
             const SplineBlend& spline = splines[tracks[s].nodes - 1];
-            spline.weights(double(tracks[s].nodes - 1) * f / (frames - 1), w);
+            spline.weights(double(tracks[s].nodes - 1) * f / steps, w);
             blend_tracks(tracks[s], w, predicted.data() + solver.first(s));
         }
     });
@@ -99,18 +101,39 @@ void predict_frame(const std::vector<PathTracks>& tracks, const std::vector<Spli
 Animation enrich_by_graph(const Exemplar& still, const GraphMotionOptions& options, GraphMotionStats* stats_out) {
     check_options(graph_motion_option_table(), options);
     still.validate("exemplar");
+    return extend_by_graph(animation_from_exemplar(still, still.samples.empty() ? 0.0 : still.samples.front().time),
+                           options, stats_out);
+}
+
+Animation extend_by_graph(const Animation& clip, const GraphMotionOptions& options, GraphMotionStats* stats_out) {
+    check_options(graph_motion_option_table(), options);
+    clip.validate("exemplar");
     const auto start = std::chrono::steady_clock::now();
     GraphMotionStats stats;
-    if (still.has_multi_sample_elements()) {  // threads, sheets, rigid bodies: dynamic/graph_shapes.hpp
-        Animation result = enrich_elements_by_graph(still, options, stats);
+    const int given = clip.frame_count(), steps = options.frames - given;
+    if (steps <= 0) {
+        if (stats_out) *stats_out = stats;
+        return clip;
+    }
+    // The clip's own frame interval goes on; a still's frames are one unit apart.
+    const double interval = given >= 2 ? clip.times[given - 1] - clip.times[given - 2] : frame_time;
+    const Exemplar last = clip.frame(given - 1);
+    Animation result = clip;
+    if (last.has_multi_sample_elements()) {  // threads, sheets, rigid bodies: dynamic/graph_shapes.hpp
+        GraphMotionOptions from_last = options;
+        from_last.frames = steps + 1;
+        const Animation more = enrich_elements_by_graph(last, from_last, stats);
+        for (int f = 1; f < more.frame_count(); ++f)
+            result.add_frame(clip.times.back() + f * interval,
+                             std::vector<Vec3>(more.positions.begin() + static_cast<long>(f) * more.sample_count(),
+                                               more.positions.begin() + static_cast<long>(f + 1) * more.sample_count()));
         stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (stats_out) *stats_out = stats;
         return result;
     }
-    check_still(still);
-    Animation result = animation_from_exemplar(still, still.samples.front().time);
-    const StParams params = graph_params(still, options);
-    const InputFrames frames(result, params, options.threads);
+    check_still(last);
+    const StParams params = graph_params(last, options);
+    const InputFrames frames(clip, params, options.threads);  // the nodes: every frame's neighbourhoods
     const NeighbourhoodGraph graph(frames, params, options.max_nodes, options.neighbours, options.seed, options.threads);
     stats.nodes = static_cast<int>(graph.nodes().size());
     stats.delta = graph.delta();
@@ -120,19 +143,21 @@ Animation enrich_by_graph(const Exemplar& still, const GraphMotionOptions& optio
     for (int nodes = 1; nodes <= max_path_steps + 1; ++nodes) splines.emplace_back(nodes);
     const FrameSolver solver(tracks);
     std::vector<Vec3> predicted(solver.track_count());
-    std::vector<Vec3> positions(result.positions);
+    std::vector<Vec3> positions(clip.positions.end() - clip.sample_count(), clip.positions.end());
     double travelled = 0.0;
-    for (int f = 1; f < options.frames; ++f) {
-        predict_frame(tracks, splines, solver, f, options.frames, options.threads, predicted);
+    const double last_time = clip.times.back();
+    for (int f = 1; f <= steps; ++f) {
+        predict_frame(tracks, splines, solver, f, steps, options.threads, predicted);
         const std::vector<Vec3> before = positions;
         // Converged when no sample moves 1/200 of a spacing in a sweep (a frame moves them
         // about a tenth of a spacing).
-        if (solver.solve(predicted, positions, still.domain, options.sweeps, 5e-3 * params.spacing, options.threads) < 0)
+        if (solver.solve(predicted, positions, clip.structure.domain, options.sweeps, 5e-3 * params.spacing,
+                         options.threads) < 0)
             ++stats.sweep_bound_hits;
         for (size_t s = 0; s < positions.size(); ++s) travelled += norm(positions[s] - before[s]);
-        result.add_frame(result.times.front() + f * frame_time, positions);
+        result.add_frame(last_time + f * interval, positions);
     }
-    stats.mean_speed = travelled / (double(options.frames - 1) * positions.size() * params.spacing);
+    stats.mean_speed = travelled / (double(steps) * positions.size() * params.spacing);
     if (stats.anneal_bound_hits > 0)
         stats.notes.push_back("graph synthesis: " + std::to_string(stats.anneal_bound_hits) +
                               " motion paths were still accepting moves when anneal_iterations (" +

@@ -13,6 +13,7 @@
 #include "dynamic/graph_nodes.hpp"
 #include "dynamic/graph_path.hpp"
 #include "dynamic/path_blend.hpp"
+#include "tessera/animation_io.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
 #include "tessera/graph_motion.hpp"
@@ -343,6 +344,51 @@ TEST(GraphMotion, ThreeDimensionalStillMovesWithoutCollapse) {
         for (int s = 0; s < a.sample_count(); ++s) moved = std::max(moved, norm(a.at(f, s) - a.at(0, s)));
     }
     EXPECT_GT(moved, 0.05);
+}
+
+// --- A short clip ---
+
+// The first `frames` frames of the swirling particles (113 particles circling in place).
+Animation swirl_clip(int frames) {
+    Animation a = load_animation(std::string(TESSERA_SOURCE_DIR) + "/examples/dynamic/swirl_particles_2d.json");
+    a.times.resize(frames);
+    a.positions.resize(static_cast<size_t>(frames) * a.sample_count());
+    return a;
+}
+
+TEST(GraphMotion, AShortClipIsContinuedFromItsLastFrameThroughTheNeighbourhoodsOfAllItsFrames) {
+    const Animation clip = swirl_clip(4);
+    GraphMotionOptions o;
+    o.frames = 24;
+    o.threads = 2;
+    GraphMotionStats stats;
+    const Animation a = extend_by_graph(clip, o, &stats);
+    ASSERT_EQ(a.frame_count(), 24);
+    for (size_t i = 0; i < clip.positions.size(); ++i) ASSERT_EQ(a.positions[i], clip.positions[i]) << "the clip's own";
+    const double interval = clip.times[3] - clip.times[2];
+    EXPECT_NEAR(a.times[23] - a.times[3], 20 * interval, 1e-9);
+    EXPECT_EQ(stats.nodes, 4 * clip.sample_count()) << "every frame's neighbourhoods are nodes";
+    const Exemplar last = clip.frame(3);
+    const NearestNeighborStats in = nearest_neighbor_distances(last, 1);
+    double step = 0.0, junction = 0.0;
+    for (int f = 4; f < a.frame_count(); ++f) {
+        const NearestNeighborStats out = nearest_neighbor_distances(a.frame(f), 1);
+        EXPECT_NEAR(out.mean, in.mean, 0.1 * in.mean) << "frame " << f;
+        EXPECT_GT(out.min, 0.5 * in.min) << "frame " << f;
+        for (int s = 0; s < a.sample_count(); ++s) {
+            const double d = norm(a.at(f, s) - a.at(f - 1, s));
+            step += d;
+            if (f == 4) junction += d;
+        }
+    }
+    step /= 20.0 * a.sample_count(), junction /= a.sample_count();
+    std::printf("swirl clip continued: mean step %.4f (spacing %.3f), at the junction %.4f\n", step, in.mean, junction);
+    EXPECT_GT(step, 0.005 * in.mean) << "it moves on";
+    EXPECT_LT(junction, 3.0 * step) << "no jump where the clip ends";
+    o.threads = 1;
+    EXPECT_TRUE(extend_by_graph(clip, o).positions == a.positions);
+    o.frames = 4;
+    EXPECT_TRUE(extend_by_graph(clip, o).positions == clip.positions) << "a clip long enough is kept";
 }
 
 // --- In the dynamic method ---
