@@ -50,7 +50,7 @@ StParams graph_params(const Exemplar& still, const GraphMotionOptions& options) 
 // Every sample's motion path, from its node at the clip's last frame (nodes: every frame's
 // sample neighbourhoods), and the tracks of its neighbours along it.
 std::vector<PathTracks> plan_paths(const InputFrames& frames, const NeighbourhoodGraph& graph, const StParams& params,
-                                   const GraphMotionOptions& options, GraphMotionStats& stats) {
+                                   const GraphMotionOptions& options, int chains, GraphMotionStats& stats) {
     const int n = frames.size() / frames.frame_count(), last = n * (frames.frame_count() - 1);
     std::vector<MotionPath> paths(n);
     std::vector<PathTracks> tracks(n);
@@ -61,7 +61,7 @@ std::vector<PathTracks> plan_paths(const InputFrames& frames, const Neighbourhoo
                                   options.seed};
     core::parallel_for(n, options.threads, [&](int begin, int end, int thread) {
         for (int s = begin; s < end; ++s) {
-            paths[s] = anneal_path(graph, last + s, settings);
+            paths[s] = chained_path(graph, last + s, settings, chains);
             tracks[s] = path_tracks(frames, spatial_neighbourhood(frames, last + s, params.radius), paths[s].nodes,
                                     params, scratch[thread]);
         }
@@ -87,11 +87,11 @@ std::vector<PathTracks> plan_paths(const InputFrames& frames, const Neighbourhoo
 void predict_frame(const std::vector<PathTracks>& tracks, const std::vector<SplineBlend>& splines,
                    const FrameSolver& solver, int f, int steps, int threads, std::vector<Vec3>& predicted) {
     core::parallel_for(static_cast<int>(tracks.size()), threads, [&](int begin, int end, int) {
-        double w[max_path_steps + 1];
+        std::vector<double> w(splines.size());
         for (int s = begin; s < end; ++s) {
             const SplineBlend& spline = splines[tracks[s].nodes - 1];
-            spline.weights(double(tracks[s].nodes - 1) * f / steps, w);
-            blend_tracks(tracks[s], w, predicted.data() + solver.first(s));
+            spline.weights(double(tracks[s].nodes - 1) * f / steps, w.data());
+            blend_tracks(tracks[s], w.data(), predicted.data() + solver.first(s));
         }
     });
 }
@@ -137,10 +137,11 @@ Animation extend_by_graph(const Animation& clip, const GraphMotionOptions& optio
     const NeighbourhoodGraph graph(frames, params, options.max_nodes, options.neighbours, options.seed, options.threads);
     stats.nodes = static_cast<int>(graph.nodes().size());
     stats.delta = graph.delta();
-    const std::vector<PathTracks> tracks = plan_paths(frames, graph, params, options, stats);
-
-    std::vector<SplineBlend> splines;
-    for (int nodes = 1; nodes <= max_path_steps + 1; ++nodes) splines.emplace_back(nodes);
+    const std::vector<PathTracks> tracks =
+        plan_paths(frames, graph, params, options, path_chains(steps, options.path_length), stats);
+    int most = 1;
+    for (const PathTracks& t : tracks) most = std::max(most, t.nodes);
+    const std::vector<SplineBlend> splines = splines_up_to(most);
     const FrameSolver solver(tracks);
     std::vector<Vec3> predicted(solver.track_count());
     std::vector<Vec3> positions(clip.positions.end() - clip.sample_count(), clip.positions.end());

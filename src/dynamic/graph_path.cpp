@@ -129,4 +129,21 @@ MotionPath anneal_path(const NeighbourhoodGraph& graph, int a, const AnnealSetti
     return result;
 }
 
+MotionPath chained_path(const NeighbourhoodGraph& graph, int a, const AnnealSettings& settings, int chains) {
+    MotionPath chain = anneal_path(graph, a, settings);
+    for (int c = 1; c < chains && chain.nodes.size() >= 2; ++c) {
+        const MotionPath next = anneal_path(graph, chain.nodes.back(), settings);
+        if (next.nodes.size() < 2) break;
+        chain.nodes.insert(chain.nodes.end(), next.nodes.begin() + 1, next.nodes.end());
+        chain.energy += next.energy, chain.direct_energy += next.direct_energy;
+        chain.at_bound = chain.at_bound || next.at_bound;
+    }
+    return chain;
+}
+
+int path_chains(int new_frames, int path_length) {
+    const long chains = std::lround(double(new_frames) / (double(path_length) * kFramesPerStep));
+    return static_cast<int>(std::clamp<long>(chains, 1, kMaxChains));
+}
+
 }  // namespace tessera::dynamic

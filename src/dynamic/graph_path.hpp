@@ -50,4 +50,16 @@ struct MotionPath {
 // Random draws keyed by (seed, a): the same path whatever thread makes it.
 MotionPath anneal_path(const NeighbourhoodGraph& graph, int a, const AnnealSettings& settings);
 
+// An animation longer than one path's walk chains paths: `chains` annealed paths end to end,
+// each from the last node of the one before (its s_b), so that a long enrichment keeps the
+// pace of a short one instead of stretching one path over all its frames. Energies and the
+// bound flag are those of the chain's paths summed and or-ed.
+MotionPath chained_path(const NeighbourhoodGraph& graph, int a, const AnnealSettings& settings, int chains);
+
+// Chains for `new_frames` frames: one path step per kFramesPerStep frames (24 frames of a
+// still walk one path of 6 steps), at least 1, at most kMaxChains (beyond, the steps slow).
+constexpr int kFramesPerStep = 4;
+constexpr int kMaxChains = 8;
+int path_chains(int new_frames, int path_length);
+
 }  // namespace tessera::dynamic

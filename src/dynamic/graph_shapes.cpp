@@ -202,9 +202,10 @@ Animation enrich_elements_by_graph(const Exemplar& still, const GraphMotionOptio
     const int n = static_cast<int>(still.elements.size());
     const AnnealSettings settings{options.path_length, options.path_length, options.alpha, options.anneal_iterations,
                                   options.seed};
+    const int chains = path_chains(options.frames - 1, options.path_length);
     std::vector<MotionPath> paths(n);
     core::parallel_for(n, options.threads, [&](int begin, int end, int) {
-        for (int e = begin; e < end; ++e) paths[e] = anneal_path(graph, e, settings);
+        for (int e = begin; e < end; ++e) paths[e] = chained_path(graph, e, settings, chains);
     });
     int with_path = 0;
     for (const MotionPath& p : paths) {
@@ -234,20 +235,21 @@ Animation enrich_elements_by_graph(const Exemplar& still, const GraphMotionOptio
 
     const std::vector<double> drift = drift_shares(still, shapes, centroids);
 
-    std::vector<SplineBlend> splines;
-    for (int nodes = 1; nodes <= max_path_steps + 1; ++nodes) splines.emplace_back(nodes);
+    size_t most = 1;
+    for (const MotionPath& p : paths) most = std::max(most, p.nodes.size());
+    const std::vector<SplineBlend> splines = splines_up_to(static_cast<int>(most));
     Animation result = animation_from_exemplar(still, still.samples.front().time);
     const int samples = result.sample_count();
     std::vector<Vec3> frames(static_cast<size_t>(options.frames) * samples);
     for (int s = 0; s < samples; ++s) frames[s] = still.samples[s].p;
     core::parallel_for(n, options.threads, [&](int begin, int end, int) {
         std::vector<Vec3> shape;
-        double w[max_path_steps + 1];
+        std::vector<double> w(splines.size());
         for (int e = begin; e < end; ++e) {
             const Element& el = still.elements[e];
             const std::vector<int>& nodes = paths[e].nodes;
             for (int f = 1; f < options.frames; ++f) {
-                splines[nodes.size() - 1].weights(double(nodes.size() - 1) * f / (options.frames - 1), w);
+                splines[nodes.size() - 1].weights(double(nodes.size() - 1) * f / (options.frames - 1), w.data());
                 shape.assign(el.sample_count, Vec3{});
                 for (size_t i = 0; i < nodes.size(); ++i)
                     for (int k = 0; k < el.sample_count; ++k) shape[k] += turns[e][i].rotate(shapes.of(nodes[i])[k]) * w[i];

@@ -49,6 +49,12 @@ SplineBlend::SplineBlend(int nodes) : nodes_(std::max(nodes, 1)) {
     }
 }
 
+std::vector<SplineBlend> splines_up_to(int nodes) {
+    std::vector<SplineBlend> splines;
+    for (int k = 1; k <= nodes; ++k) splines.emplace_back(k);
+    return splines;
+}
+
 void SplineBlend::weights(double u, double* w) const {
     const int n = nodes_ - 1;
     std::fill(w, w + nodes_, 0.0);

@@ -41,6 +41,9 @@ private:
     std::vector<double> control_;
 };
 
+// The blends of paths of 1 .. `nodes` nodes (splines[k - 1] has k).
+std::vector<SplineBlend> splines_up_to(int nodes);
+
 // The neighbours of one sample followed along its path.
 struct PathTracks {
     int nodes = 1;               // path nodes, s_0 .. s_n

@@ -346,6 +346,28 @@ TEST(GraphMotion, ThreeDimensionalStillMovesWithoutCollapse) {
     EXPECT_GT(moved, 0.05);
 }
 
+// Paths chained end to end: a long enrichment keeps the pace of a short one (one path
+// stretched over 96 frames walked a quarter as fast) and the still's spacing.
+TEST(GraphMotion, ALongEnrichmentChainsPathsAndKeepsItsPace) {
+    const Exemplar still = poisson_still();
+    GraphMotionOptions o;
+    o.threads = 2;
+    o.frames = 96;
+    GraphMotionStats stats;
+    const Animation a = enrich_by_graph(still, o, &stats);
+    const Animation& short_one = enriched();
+    const auto pace = [](const Animation& x) {
+        double travelled = 0.0;
+        for (int f = 1; f < x.frame_count(); ++f)
+            for (int s = 0; s < x.sample_count(); ++s) travelled += norm(x.at(f, s) - x.at(f - 1, s));
+        return travelled / ((x.frame_count() - 1.0) * x.sample_count());
+    };
+    EXPECT_NEAR(stats.path_steps, 24.0, 1.0) << "4 chained paths of 6 steps";
+    EXPECT_NEAR(pace(a), pace(short_one), 0.3 * pace(short_one));
+    for (int f = 1; f < a.frame_count(); f += 5)
+        EXPECT_GT(closest_pair(a.frame(f)), 0.5 * closest_pair(still)) << "frame " << f;
+}
+
 // --- A short clip ---
 
 // The first `frames` frames of the swirling particles (113 particles circling in place).
