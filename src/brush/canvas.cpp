@@ -77,6 +77,8 @@ struct ProgressPart {
 
 // Fill's share of its progress spent growing; the solver's iterations take the rest.
 constexpr double kFillGrowthShare = 0.3;
+// How far past the border of its part (in its spacings) an entry grows in fill's second pass.
+constexpr double kSeamSpacings = 2.0;
 
 double stroke_half_width(const BrushCanvas::Impl& st, const Stroke& stroke, int kappa) {
     const double spacing = kappa >= 0 ? st.palette[kappa].spacing : 1.0;
@@ -301,16 +303,16 @@ PaintedPlaces painted_places(const BrushCanvas::Impl& st, const std::vector<char
     return places;
 }
 
-// The palette entry of the nearest painted place (a brute-force scan: fill runs it over the
-// cells of a coarse grid, against the painted elements only).
-int nearest_entry(const PaintedPlaces& places, const Vec3& p) {
-    double best = std::numeric_limits<double>::infinity();
-    int kappa = -1;
+// Whether p is no more than `margin` further from entry k's nearest painted place than from
+// any other entry's (margin 0: the part of the canvas nearest to entry k; a brute-force scan:
+// fill runs it over the cells of a coarse grid, against the painted elements only).
+bool near_part(const PaintedPlaces& places, const Vec3& p, int k, double margin) {
+    double own = std::numeric_limits<double>::infinity(), other = own;
     for (size_t i = 0; i < places.position.size(); ++i) {
-        const double d2 = squared_norm(places.position[i] - p);
-        if (d2 < best) best = d2, kappa = places.kappa[i];
+        double& nearest = places.kappa[i] == k ? own : other;
+        nearest = std::min(nearest, norm(places.position[i] - p));
     }
-    return kappa;
+    return own <= other + margin;
 }
 
 double weighted_energy(const BrushOptions& o, const BrushCanvas::Energies& e) {
@@ -374,22 +376,30 @@ BrushReport BrushCanvas::fill(const std::vector<int>& exemplars) {
     } else {
         const int parts = static_cast<int>(std::count(entries.begin(), entries.end(), 1));
         const PaintedPlaces painted = painted_places(st, entries);
-        for (int k = 0, part = 0; k < static_cast<int>(entries.size()); ++k) {
-            if (!entries[k]) continue;
-            const double share = kFillGrowthShare / parts;
-            const ProgressPart progress_part(st, share * part, share * (part + 1), "fill");
-            ++part;
-            std::optional<Domain> region;
-            try {  // the cells nearer to an element of entry k than to any other entry's
-                region = Domain::region(
-                    st.space(), [&](const Vec3& p) { return nearest_entry(painted, p) == k; }, 0.5 * spacing,
-                    "the part of the canvas nearest to '" + st.names[k] + "'");
-            } catch (const Error&) {
-                continue;  // no cell of the canvas is nearest to it
+        // Each entry grows over its part, then (several parts) over its part widened past the
+        // border by kSeamSpacings of its spacing, next to what it and the others grew: the
+        // conflict check drops an entry's elements where the other's stand, and the first
+        // pass left a seam where the parts meet (a bare band across the surface demo's blob).
+        const int passes = parts > 1 ? 2 : 1;
+        for (int pass = 0, part = 0; pass < passes; ++pass)
+            for (int k = 0; k < static_cast<int>(entries.size()); ++k) {
+                if (!entries[k]) continue;
+                const double share = kFillGrowthShare / (parts * passes);
+                const ProgressPart progress_part(st, share * part, share * (part + 1), "fill");
+                ++part;
+                const double margin = pass == 0 ? 0.0 : kSeamSpacings * st.palette[k].spacing;
+                std::optional<Domain> region;
+                try {  // the cells nearer to an element of entry k than to any other entry's (+ margin)
+                    region = Domain::region(
+                        st.space(), [&](const Vec3& p) { return near_part(painted, p, k, margin); }, 0.5 * spacing,
+                        "the part of the canvas nearest to '" + st.names[k] + "'");
+                } catch (const Error&) {
+                    continue;  // no cell of the canvas is nearest to it
+                }
+                const auto [added, dropped] =
+                    grow_entry(st, k, *region, field, region->bounds().center(), kFillTilt, RegionEdge::open);
+                r.added += added, r.removed += dropped;
             }
-            const auto [added, dropped] = grow_entry(st, k, *region, field, region->bounds().center(), kFillTilt, RegionEdge::open);
-            r.added += added, r.removed += dropped;
-        }
     }
     const BrushReport solved = [&] {
         const ProgressPart part(st, kFillGrowthShare, 1.0, "done");
