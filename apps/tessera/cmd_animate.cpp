@@ -7,19 +7,14 @@
 #include <iostream>
 #include <memory>
 
+#include "animation_files.hpp"
 #include "common.hpp"
 #include "option_flags.hpp"
 #include "status_printer.hpp"
-#include "tessera/animation_io.hpp"
-#include "tessera/animation_render.hpp"
 #include "tessera/graph_motion.hpp"
-#include "tessera/io.hpp"
 
 namespace tessera_cli {
 namespace {
-
-// Frames of path drawn behind each particle in the animated PNG, as `synth` draws them.
-constexpr int png_trail = 6;
 
 struct AnimateArgs {
     std::string input, input_domain, output;
@@ -37,12 +32,7 @@ void run(const AnimateArgs& args) {
     tessera::GraphMotionStats stats;
     const tessera::Animation out =
         status.step("graph synthesis", [&] { return tessera::enrich_by_graph(still, options, &stats); });
-    status.step("writing " + args.output, [&] {
-        if (extension_of(args.output) != ".png") return tessera::save_animation(out, args.output);
-        tessera::AnimationRenderOptions render;
-        render.trail = png_trail;
-        tessera::write_file_atomic(args.output, tessera::render_animation_png(out, render));
-    });
+    status.step("writing " + args.output, [&] { write_animation_file(out, args.output); });
     if (args.quiet) return;
     for (const std::string& note : stats.notes) std::cerr << "note: " << note << "\n";
     std::cerr << "animate: " << still.elements.size() << " elements x " << out.frame_count() << " frames, "

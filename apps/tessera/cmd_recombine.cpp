@@ -5,29 +5,19 @@
 #include <iostream>
 #include <memory>
 
+#include "animation_files.hpp"
 #include "common.hpp"
 #include "status_printer.hpp"
 #include "tessera/animation_io.hpp"
-#include "tessera/animation_render.hpp"
 #include "tessera/motion_analysis.hpp"
 
 namespace tessera_cli {
 namespace {
 
-// Frames of path drawn behind each particle in the animated PNG, as `synth` draws them.
-constexpr int png_trail = 6;
-
 struct RecombineArgs {
     std::string coarse, detail, output;
     bool quiet = false;
 };
-
-void write_animation(const tessera::Animation& animation, const std::string& path) {
-    if (extension_of(path) != ".png") return tessera::save_animation(animation, path);
-    tessera::AnimationRenderOptions options;
-    options.trail = png_trail;
-    tessera::write_file_atomic(path, tessera::render_animation_png(animation, options));
-}
 
 // recombine_motion's input errors are about the detail not fitting the coarse animation:
 // the message names both files.
@@ -49,7 +39,7 @@ void run(const RecombineArgs& args) {
     const tessera::Animation detail =
         status.step("reading " + args.detail, [&] { return tessera::load_animation(args.detail); });
     const tessera::Animation out = recombine(args, coarse, detail);
-    status.step("writing " + args.output, [&] { write_animation(out, args.output); });
+    status.step("writing " + args.output, [&] { write_animation_file(out, args.output); });
     if (!args.quiet)
         std::cerr << "recombine: " << out.structure.elements.size() << " elements x " << out.frame_count()
                   << " frames (details from " << detail.structure.elements.size() << " elements x "

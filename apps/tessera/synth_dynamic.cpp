@@ -4,35 +4,28 @@
 #include <cstdio>
 #include <iostream>
 
+#include "animation_files.hpp"
 #include "common.hpp"
 #include "interrupt_scope.hpp"
 #include "status_printer.hpp"
 #include "tessera/animation_io.hpp"
-#include "tessera/animation_render.hpp"
 #include "tessera/graph_motion.hpp"
 
 namespace tessera_cli {
 
 namespace {
 
-// Paths drawn behind each particle in animated pictures, in frames.
-constexpr int preview_trail = 6;
-
-void write_picture(const tessera::Animation& animation, const std::string& path) {
-    tessera::AnimationRenderOptions options;
-    options.trail = preview_trail;
-    tessera::write_file_atomic(path, tessera::render_animation_png(animation, options));
-}
-
+// The output with its run statistics (.json keeps them), or an animated PNG.
 void write_animation(const tessera::AnimatedArrangement& result, const std::string& path) {
     if (extension_of(path) == ".png")
-        write_picture(result, path);
+        write_animation_picture(result, path);
     else
         tessera::save_animation(result, result.stats, path);
 }
 
 void write_outputs(const DynamicRun& run, const tessera::AnimatedArrangement& result, StatusPrinter& status) {
-    if (!run.preview.empty()) status.step("writing " + run.preview, [&] { write_picture(result, run.preview); });
+    if (!run.preview.empty())
+        status.step("writing " + run.preview, [&] { write_animation_picture(result, run.preview); });
     status.step("writing " + run.output, [&] { write_animation(result, run.output); });
     if (!run.quiet) {
         char line[200];

@@ -146,4 +146,19 @@ int path_chains(int new_frames, int path_length) {
     return static_cast<int>(std::clamp<long>(chains, 1, kMaxChains));
 }
 
+void add_path_stats(const std::vector<MotionPath>& paths, GraphMotionStats& stats) {
+    int with_path = 0;
+    for (const MotionPath& p : paths) {
+        if (p.nodes.size() < 2) {
+            ++stats.still_samples;
+            continue;
+        }
+        ++with_path;
+        stats.direct_energy += p.direct_energy, stats.path_energy += p.energy;
+        stats.path_steps += static_cast<double>(p.nodes.size() - 1);
+        stats.anneal_bound_hits += p.at_bound ? 1 : 0;
+    }
+    if (with_path > 0) stats.direct_energy /= with_path, stats.path_energy /= with_path, stats.path_steps /= with_path;
+}
+
 }  // namespace tessera::dynamic

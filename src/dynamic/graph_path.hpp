@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "dynamic/graph_nodes.hpp"
+#include "tessera/graph_motion.hpp"
 
 namespace tessera::dynamic {
 
@@ -61,5 +62,9 @@ MotionPath chained_path(const NeighbourhoodGraph& graph, int a, const AnnealSett
 constexpr int kFramesPerStep = 4;
 constexpr int kMaxChains = 8;
 int path_chains(int new_frames, int path_length);
+
+// The paths' means into `stats` (energies, steps of the paths of two nodes or more), their
+// annealing bound hits, and the samples or elements left without a path.
+void add_path_stats(const std::vector<MotionPath>& paths, GraphMotionStats& stats);
 
 }  // namespace tessera::dynamic

@@ -207,18 +207,7 @@ Animation enrich_elements_by_graph(const Exemplar& still, const GraphMotionOptio
     core::parallel_for(n, options.threads, [&](int begin, int end, int) {
         for (int e = begin; e < end; ++e) paths[e] = chained_path(graph, e, settings, chains);
     });
-    int with_path = 0;
-    for (const MotionPath& p : paths) {
-        if (p.nodes.size() < 2) {
-            ++stats.still_samples;
-            continue;
-        }
-        ++with_path;
-        stats.direct_energy += p.direct_energy, stats.path_energy += p.energy;
-        stats.path_steps += static_cast<double>(p.nodes.size() - 1);
-        stats.anneal_bound_hits += p.at_bound ? 1 : 0;
-    }
-    if (with_path > 0) stats.direct_energy /= with_path, stats.path_energy /= with_path, stats.path_steps /= with_path;
+    add_path_stats(paths, stats);
 
     // A thread or sheet bends through its path's shapes, each turned onto its own (Kabsch):
     // unturned, a noodle morphing into a neighbour's shape swung through its orientation and
