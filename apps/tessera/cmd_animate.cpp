@@ -1,6 +1,6 @@
 // apps/tessera/cmd_animate.cpp — `tessera animate STILL -o OUT`: motion for a still by
-// graph synthesis (Dynamic Element Textures, section 4.3; tessera::enrich_by_graph), on its
-// own: particles, threads, sheets and rigid elements. `synth --method dynamic` does the same
+// graph synthesis (Dynamic Element Textures, section 4.3; tessera::extend_by_graph), or a
+// short clip continued, on its own: particles, threads, sheets and rigid elements. `synth --method dynamic` does the same
 // to a still before synthesizing it into a domain (--graph-frames) or onto a coarse motion.
 // Flags from graph_motion_option_table. Writes .json, .csv, .usda, .gltf, .glb or an
 // animated .png.
@@ -11,7 +11,9 @@
 #include "common.hpp"
 #include "option_flags.hpp"
 #include "status_printer.hpp"
+#include "tessera/animation_io.hpp"
 #include "tessera/graph_motion.hpp"
+#include "tessera/io.hpp"
 
 namespace tessera_cli {
 namespace {
@@ -27,15 +29,18 @@ void run(const AnimateArgs& args) {
     args.flags.apply(tessera::graph_motion_option_table(), options);
     check_output_path(args.output, "-o", {".json", ".csv", ".usda", ".gltf", ".glb", ".png"});
     StatusPrinter status("animate", args.quiet, std::cerr);
-    const tessera::Exemplar still =
-        status.step("reading " + args.input, [&] { return load_input(args.input, args.input_domain); });
+    tessera::LoadOptions load_options;
+    if (!args.input_domain.empty())
+        load_options.input_domain = tessera::parse_box_domain(args.input_domain, "--input-domain");
+    const tessera::Animation clip =
+        status.step("reading " + args.input, [&] { return tessera::load_animation(args.input, load_options); });
     tessera::GraphMotionStats stats;
     const tessera::Animation out =
-        status.step("graph synthesis", [&] { return tessera::enrich_by_graph(still, options, &stats); });
+        status.step("graph synthesis", [&] { return tessera::extend_by_graph(clip, options, &stats); });
     status.step("writing " + args.output, [&] { write_animation_file(out, args.output); });
     if (args.quiet) return;
     for (const std::string& note : stats.notes) std::cerr << "note: " << note << "\n";
-    std::cerr << "animate: " << still.elements.size() << " elements x " << out.frame_count() << " frames, "
+    std::cerr << "animate: " << clip.structure.elements.size() << " elements x " << out.frame_count() << " frames, "
               << stats.nodes << " graph nodes, paths of " << format_number(stats.path_steps)
               << " steps on average, mean motion " << format_number(stats.mean_speed) << " spacings per frame, "
               << format_number(stats.seconds) << " s\nwrote " << args.output << std::endl;
@@ -47,11 +52,13 @@ Subcommand add_animate_command(CLI::App& app) {
     auto args = std::make_shared<AnimateArgs>();
     CLI::App* cmd = app.add_subcommand(
         "animate",
-        "Give a still (one frame) motion by graph synthesis (Dynamic Element Textures, section 4.3): every "
-        "sample's neighbourhood walks an annealed path through the graph of the still's neighbourhoods; "
-        "threads, sheets and rigid elements walk through the still's element shapes, their centroids as "
-        "particles (docs/dynamic.md). Frame 0 is the still.");
-    cmd->add_option("STILL", args->input, "The still (.json or .csv); of an animation, its first frame.")
+        "Give a still (one frame) motion by graph synthesis (Dynamic Element Textures, section 4.3), or "
+        "continue a short clip: every sample's neighbourhood walks an annealed path through the graph of the "
+        "input's neighbourhoods (of all its frames); threads, sheets and rigid elements walk through the "
+        "element shapes, their centroids as particles (docs/dynamic.md). The input's frames come first.");
+    cmd->add_option("STILL", args->input,
+                    "The still (.json or .csv), or a clip (.json or .csv with frames) to continue to --frames "
+                    "frames (one of that many frames or more is written as it is).")
         ->required()
         ->type_name("FILE");
     add_output_option(

@@ -31,17 +31,23 @@ tessera::Animation recombine(const tessera::Animation& coarse, const tessera::An
     return tessera::recombine_motion(coarse, detail);
 }
 
-tessera::Animation animate(const tessera::Exemplar& still, const py::dict& options) {
+tessera::Animation animate(const tessera::Animation& clip, const py::dict& options) {
     tessera::GraphMotionOptions o;
-    apply_keywords(tessera::graph_motion_option_table(), o, options, still.dimension, "animate");
+    apply_keywords(tessera::graph_motion_option_table(), o, options, clip.structure.dimension, "animate");
     py::gil_scoped_release release;
-    return tessera::enrich_by_graph(still, o);
+    return tessera::extend_by_graph(clip, o);
 }
 
 }  // namespace
 
 void bind_motion(py::module_& m) {
-    m.def("enrich_by_graph", &animate, py::arg("still"), py::arg("options"));
+    m.def("extend_by_graph", &animate, py::arg("clip"), py::arg("options"));
+    m.def(
+        "enrich_by_graph",
+        [](const tessera::Exemplar& still, const py::dict& options) {
+            return animate(tessera::animation_from_exemplar(still), options);
+        },
+        py::arg("still"), py::arg("options"));
     m.def("decompose_motion", &decompose, py::arg("animation"), py::arg("options"));
     m.def("recombine_motion", &recombine, py::arg("coarse"), py::arg("detail"));
 }

@@ -153,12 +153,14 @@ def animate(still, **options):
     annealed paths through the graph of the still's neighbourhoods; threads, sheets and rigid
     multi-sample elements through the graph of its element shapes, their centroids as
     particles, threads and sheets held to their rest lengths and apart, rigid elements turned
-    only. still may be a path (of an animation, its first frame is taken). See
+    only. still may also be a short clip (an Animation, or a path to a file with frames):
+    its frames come first, and it is continued from its last frame through the neighbourhoods
+    of all its frames (a clip of `frames` frames or more is returned as it is). See
     docs/dynamic.md, "Graph synthesis (motion from a still)"."""
     _options.check_keywords("animate", options, ("graph_motion",))
-    if isinstance(still, Animation):
-        still = still.frame(0)
-    return _tessera.enrich_by_graph(_as_data(still), options)
+    if isinstance(still, Exemplar):
+        return _tessera.enrich_by_graph(still, options)
+    return _tessera.extend_by_graph(_as_animation(still, "still"), options)
 
 
 _options.with_signature(animate, ("still",), ("graph_motion",))

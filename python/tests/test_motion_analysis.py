@@ -109,3 +109,12 @@ def test_animate_names_bad_keywords():
         tessera.animate(ROOT / "examples" / "poisson_disk_2d.json", frames=1)
     with pytest.raises(TypeError, match="unexpected keyword argument 'frame'"):
         tessera.animate(ROOT / "examples" / "poisson_disk_2d.json", frame=3)
+
+
+def test_animate_continues_a_short_clip(swirl):
+    clip = tessera.animate(ROOT / "examples" / "dynamic" / "swirl_particles_2d.json", frames=40, threads=2)
+    assert clip.frame_count == 40
+    assert np.array_equal(clip.positions[:32], swirl.positions)  # the clip's own frames first
+    assert np.linalg.norm(clip.positions[39] - clip.positions[31], axis=1).mean() > 0.01
+    same = tessera.animate(swirl, frames=32)
+    assert np.array_equal(same.positions, swirl.positions)  # long enough: as it is

@@ -68,6 +68,10 @@ TEST_F(GraphMotionCli, AnimateWritesTheStillWithMotion) {
     double moved = 0.0;
     for (int s = 0; s < out.sample_count(); ++s) moved += tessera::norm(out.at(7, s) - out.at(0, s));
     EXPECT_GT(moved / out.sample_count(), 0.02);
+    // A clip is continued: its 32 frames first.
+    r = run("animate '" + example("dynamic/swirl_particles_2d.json") + "' -o '" + path("swirl.json") + "' --frames 36 -q");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(tessera::load_animation(path("swirl.json")).frame_count(), 36);
     r = run("animate '" + still() + "' -o '" + path("dots.png") + "' --frames 4 -q");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << r.err;
