@@ -270,6 +270,31 @@ namespace {
 // room the inserted elements cleared around them grown again: the elements within reach of
 // them are the horizon of rounds that run until nothing more fits. (Only removing what a
 // channel protein overlaps left a ring around it: the membrane lost 4% of its lipids.)
+// The unlocked elements of some types from index `start` on, locked for the holder's
+// lifetime and unlocked again when it ends, also when a cancel throws out of the rounds in
+// between (an element left locked would never move again, and the caller would see it locked).
+class HeldTypes {
+public:
+    HeldTypes(Grower::Impl& g, int start, const std::vector<char>& types) : g_(g), start_(start) {
+        for (int i = start; i < static_cast<int>(g.out.size()); ++i) {
+            grow::OutElement& o = g.out[i];
+            if (!o.locked && types[o.type]) o.locked = true, ids_.push_back(o.id);
+        }
+        std::sort(ids_.begin(), ids_.end());
+    }
+    ~HeldTypes() {  // elements may have been removed or added since: found by id
+        for (int i = start_; i < static_cast<int>(g_.out.size()); ++i)
+            if (std::binary_search(ids_.begin(), ids_.end(), g_.out[i].id)) g_.out[i].locked = false;
+    }
+    HeldTypes(const HeldTypes&) = delete;
+    HeldTypes& operator=(const HeldTypes&) = delete;
+
+private:
+    Grower::Impl& g_;
+    const int start_;
+    std::vector<std::uint64_t> ids_;
+};
+
 // Returns how many elements of a minority type were squeezed in.
 int complete_rare_types(Grower::Impl& g, const Domain& region, int start, GrowReport& report) {
     const grow::TypeCompletion done = grow::complete_rare_types(g, start, region);
@@ -295,19 +320,12 @@ int complete_rare_types(Grower::Impl& g, const Domain& region, int start, GrowRe
     // The completed types' elements stay put while the room is regrown: to the regrowth's
     // type balance they are over their share (the room around them is empty), and it took
     // a third of them out again (two classes: stones 343 -> 410 -> 376).
-    std::vector<std::uint64_t> held;
-    for (int i = start; i < static_cast<int>(g.out.size()); ++i) {
-        grow::OutElement& o = g.out[i];
-        if (!o.locked && done.completed[o.type]) o.locked = true, held.push_back(o.id);
-    }
+    const HeldTypes held(g, start, done.completed);
     const auto call_start = g.t0;  // run_rounds restarts the clock; the call's time runs on
     const GrowReport again = run_rounds(
         g, limits, [](const GrowReport&) { return false; }, [](const GrowReport&) { return 0.99; }, 0, false,
         report.rounds);
     g.t0 = call_start;
-    std::sort(held.begin(), held.end());
-    for (int i = start; i < static_cast<int>(g.out.size()); ++i)
-        if (std::binary_search(held.begin(), held.end(), g.out[i].id)) g.out[i].locked = false;
     report.rounds += again.rounds;
     report.added += again.added;
     report.candidates += again.candidates;

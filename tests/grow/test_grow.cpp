@@ -598,6 +598,36 @@ TEST(Grow, TheSeedPatchCountsAsAddedAndAStepIsTimed) {
 // A cancel is polled inside rounds: a 3D growth on one thread (by round 22, rounds of about
 // 0.2 s) stops within about 0.1 s of the request (0.15 s allowed here), its report up to the
 // last finished round is kept, and the arrangement stays valid.
+// A cancel at any point of a call, the minority completion's regrowth included (it holds the
+// stones it squeezed in locked while the room around them is regrown), leaves no element
+// locked that the caller did not lock.
+TEST(Grow, ACancelAnywhereLeavesNoElementLocked) {
+    const Exemplar ex = example("two_class_2d");
+    const Box b = ex.domain.bounds();
+    const Domain region = Domain::box(b.lo, b.lo + Vec3{3 * b.size().x, 3 * b.size().y, 0}, 2);
+    GrowOptions o;
+    o.threads = 1;
+    int events = 0;
+    {
+        Grower whole(ex, o);
+        whole.set_progress([&](const ProgressEvent&) { return ++events > 0; });
+        ASSERT_GT(whole.grow(region).rare, 0) << "the case must squeeze stones in";
+    }
+    int cancelled = 0;
+    for (int stop_at = 1; stop_at < events; stop_at += std::max(1, events / 40)) {
+        Grower g(ex, o);
+        int seen = 0;
+        g.set_progress([&](const ProgressEvent&) { return ++seen < stop_at; });
+        try {
+            g.grow(region);
+        } catch (const Cancelled&) {
+            ++cancelled;
+        }
+        for (const Element& e : g.arrangement().elements) ASSERT_FALSE(e.locked) << "cancelled at event " << stop_at;
+    }
+    EXPECT_GT(cancelled, 10);
+}
+
 TEST(Grow, ACancelTakesEffectWithinARoundAndKeepsTheReport) {
     const Exemplar ex = example("rods_3d");
     GrowOptions o;
