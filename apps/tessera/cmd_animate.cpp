@@ -4,6 +4,7 @@
 // to a still before synthesizing it into a domain (--graph-frames) or onto a coarse motion.
 // Flags from graph_motion_option_table. Writes .json, .csv, .usda, .gltf, .glb or an
 // animated .png.
+#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -40,10 +41,13 @@ void run(const AnimateArgs& args) {
     status.step("writing " + args.output, [&] { write_animation_file(out, args.output); });
     if (args.quiet) return;
     for (const std::string& note : stats.notes) std::cerr << "note: " << note << "\n";
-    std::cerr << "animate: " << clip.structure.elements.size() << " elements x " << out.frame_count() << " frames, "
-              << stats.nodes << " graph nodes, paths of " << format_number(stats.path_steps)
-              << " steps on average, mean motion " << format_number(stats.mean_speed) << " spacings per frame, "
-              << format_number(stats.seconds) << " s\nwrote " << args.output << std::endl;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "%zu elements x %d frames, %d graph nodes, paths of %.1f steps on average, mean motion %.3f "
+                  "spacings per frame, %.2f s",
+                  clip.structure.elements.size(), out.frame_count(), stats.nodes, stats.path_steps, stats.mean_speed,
+                  stats.seconds);
+    std::cerr << "animate: " << line << "\nwrote " << args.output << std::endl;
 }
 
 }  // namespace
