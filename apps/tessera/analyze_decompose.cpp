@@ -44,9 +44,7 @@ void run_decompose(const DecomposeRun& run) {
         std::filesystem::absolute(run.detail).lexically_normal())
         fail_option("-o and --detail must be different files, got '" + run.coarse + "' for both");
     StatusPrinter status("analyze", run.quiet, std::cerr);
-    tessera::LoadOptions load_options;
-    if (!run.input_domain.empty())
-        load_options.input_domain = tessera::parse_box_domain(run.input_domain, "--input-domain");
+    const tessera::LoadOptions load_options = input_load_options(run.input_domain);
     const tessera::Animation input =
         status.step("reading " + run.input, [&] { return tessera::load_animation(run.input, load_options); });
     const tessera::MotionSplit split =

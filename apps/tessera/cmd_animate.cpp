@@ -30,9 +30,7 @@ void run(const AnimateArgs& args) {
     args.flags.apply(tessera::graph_motion_option_table(), options);
     check_output_path(args.output, "-o", {".json", ".csv", ".usda", ".gltf", ".glb", ".png"});
     StatusPrinter status("animate", args.quiet, std::cerr);
-    tessera::LoadOptions load_options;
-    if (!args.input_domain.empty())
-        load_options.input_domain = tessera::parse_box_domain(args.input_domain, "--input-domain");
+    const tessera::LoadOptions load_options = input_load_options(args.input_domain);
     const tessera::Animation clip =
         status.step("reading " + args.input, [&] { return tessera::load_animation(args.input, load_options); });
     tessera::GraphMotionStats stats;

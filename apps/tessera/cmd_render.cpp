@@ -27,9 +27,7 @@ struct RenderArgs {
 void render_animation(RenderArgs& args, StatusPrinter& status) {
     if (args.trail < 0) fail_option("--trail must be an integer >= 0, got " + std::to_string(args.trail));
     if (extension_of(args.output) != ".png") fail_option("-o must be a .png for an animated FILE (an animated PNG)");
-    tessera::LoadOptions load_options;
-    if (!args.input_domain.empty())
-        load_options.input_domain = tessera::parse_box_domain(args.input_domain, "--input-domain");
+    const tessera::LoadOptions load_options = input_load_options(args.input_domain);
     const tessera::Animation data =
         status.step("reading " + args.input, [&] { return tessera::load_animation(args.input, load_options); });
     tessera::AnimationRenderOptions options;

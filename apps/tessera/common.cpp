@@ -185,10 +185,15 @@ CLI::Option* add_seed_option(CLI::App& app, std::uint64_t& seed) {
                               "the same output, whatever --threads is.");
 }
 
-tessera::Exemplar load_input(const std::string& path, const std::string& input_domain_text,
-                             const std::string& flag) {
+tessera::LoadOptions input_load_options(const std::string& input_domain_text, const std::string& flag) {
     tessera::LoadOptions options;
     if (!input_domain_text.empty()) options.input_domain = tessera::parse_box_domain(input_domain_text, flag);
+    return options;
+}
+
+tessera::Exemplar load_input(const std::string& path, const std::string& input_domain_text,
+                             const std::string& flag) {
+    const tessera::LoadOptions options = input_load_options(input_domain_text, flag);
     tessera::Exemplar data;
     try {
         data = tessera::load(path, options);

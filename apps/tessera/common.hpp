@@ -105,6 +105,11 @@ void check_meshes_for_picture(tessera::RenderOptions::Meshes meshes, const std::
 tessera::Exemplar load_input(const std::string& path, const std::string& input_domain_text,
                              const std::string& flag = "--input-domain");
 
+// The load options of an input with the observation window `input_domain_text` (empty =
+// none), an option error naming `flag` when it is not a box; for tessera::load_animation.
+tessera::LoadOptions input_load_options(const std::string& input_domain_text,
+                                        const std::string& flag = "--input-domain");
+
 // Lower-cased extension including the dot ("" if none), as the library reads it.
 std::string extension_of(const std::string& path);
 

@@ -61,9 +61,7 @@ void check_dynamic_outputs(const DynamicRun& run) {
 void run_dynamic(const DynamicRun& run, StatusPrinter& status,
                  const std::function<tessera::Domain(const tessera::Exemplar&)>& domain_of) {
     std::optional<InterruptScope> interrupt_scope(std::in_place);
-    tessera::LoadOptions load_options;
-    if (!run.input_domain.empty())
-        load_options.input_domain = tessera::parse_box_domain(run.input_domain, "--input-domain");
+    const tessera::LoadOptions load_options = input_load_options(run.input_domain);
     const tessera::Animation exemplar = status.step(
         "reading " + run.input, [&] { return tessera::load_animation(run.input, load_options); });
     // A still gets its frames from graph synthesis (--graph-frames) before the window applies,

@@ -100,8 +100,7 @@ Animation centroid_motion(const Exemplar& still, const Shapes& shapes, const Gra
 // Measured on noodles_2d (noodles 1.7 long, centroids 1.0 apart): segments of two noodles
 // crossing in 22 of 24 frames with the whole motion (up to 11 pairs), in 10 with the share
 // to the power 1, in none squared.
-std::vector<double> drift_shares(const Exemplar& still, const Shapes& shapes, const Animation& centroids) {
-    const double spacing = nearest_neighbor_distances(centroids.frame(0), 1).mean;
+std::vector<double> drift_shares(const Exemplar& still, const Shapes& shapes, double spacing) {
     std::vector<double> share(still.elements.size(), 1.0);
     for (size_t e = 0; e < share.size(); ++e) {
         double extent = 0.0;
@@ -120,8 +119,7 @@ bool keeps_shape(const Exemplar& still, int e) {
 }
 
 // The rest lengths of the deformable elements' edges (none for the rigid ones).
-std::vector<std::vector<Edge>> deformable_edges(const Exemplar& still, int threads) {
-    (void)threads;
+std::vector<std::vector<Edge>> deformable_edges(const Exemplar& still) {
     Exemplar grid_view = still;  // a multi-sample element of topology none is rigid here: no grid needed
     for (size_t t = 0; t < grid_view.types.size(); ++t)
         if (effective_topology(still, static_cast<int>(t)) == ElementTopology::none)
@@ -163,7 +161,7 @@ void rigid_again(const Exemplar& still, std::vector<Vec3>& frames, int frame_cou
 void hold_constraints(const Exemplar& still, const Animation& still_frames, std::vector<Vec3>& frames,
                       const GraphMotionOptions& options, GraphMotionStats& stats) {
     const int samples = static_cast<int>(still.samples.size());
-    const std::vector<std::vector<Edge>> edges = deformable_edges(still, options.threads);
+    const std::vector<std::vector<Edge>> edges = deformable_edges(still);
     std::vector<int> element_of(samples);
     for (int s = 0; s < samples; ++s) element_of[s] = still.samples[s].element;
     std::vector<Vec3> rest(frames.size());  // the still at every frame: the pairs' own distances
@@ -222,7 +220,9 @@ Animation enrich_elements_by_graph(const Exemplar& still, const GraphMotionOptio
             turns[e].push_back(turn);
         }
 
-    const std::vector<double> drift = drift_shares(still, shapes, centroids);
+    // The centroids' mean spacing: the drift's scale and the unit of the reported motion.
+    const double spacing = nearest_neighbor_distances(centroids.frame(0), options.threads).mean;
+    const std::vector<double> drift = drift_shares(still, shapes, spacing);
 
     size_t most = 1;
     for (const MotionPath& p : paths) most = std::max(most, p.nodes.size());
@@ -261,7 +261,6 @@ Animation enrich_elements_by_graph(const Exemplar& still, const GraphMotionOptio
         for (int s = 0; s < samples; ++s) travelled += norm(at[s] - frames[static_cast<size_t>(f - 1) * samples + s]);
         result.add_frame(result.times.front() + f * frame_time, at);
     }
-    const double spacing = nearest_neighbor_distances(centroids.frame(0), options.threads).mean;
     stats.mean_speed = travelled / (double(options.frames - 1) * samples * spacing);
     return result;
 }
