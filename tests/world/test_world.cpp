@@ -301,6 +301,30 @@ TEST(World, EveryTileKeepsTheClassShares) {
     }
 }
 
+// A first-phase tile is grown with nothing beyond its borders: its minority type (the
+// two-class stones, completed by growth's step 6) must not line those borders, or the
+// later tiles' seams are left without any.
+TEST(World, FirstPhaseTilesDoNotLineTheirBordersWithTheMinorityType) {
+    const Exemplar ex = example("two_class_2d");
+    const double size = 12.0, band = 1.0;
+    World w(ex, world_options(size, 2));
+    int stones_near = 0, stones = 0;
+    for (int x = 0; x < 6; x += 2)
+        for (int y = 0; y < 6; y += 2) {  // 9 tiles of phase 0
+            for (const Element& e : w.tile({x, y, 0}).elements) {
+                if (ex.types[e.type].name != "stone") continue;
+                const double u = e.position.x - x * size, v = e.position.y - y * size;
+                ++stones;
+                stones_near += std::min({u, v, size - u, size - v}) < band;
+            }
+        }
+    const double band_area = size * size - (size - 2 * band) * (size - 2 * band);
+    const double near_density = stones_near / (9 * band_area), density = stones / (9 * size * size);
+    // 1.34 before the open faces counted in the completion's clearance; noise about 0.11.
+    EXPECT_LT(near_density, 1.25 * density) << stones_near << " of " << stones << " stones within " << band;
+    EXPECT_GT(near_density, 0.75 * density) << stones_near << " of " << stones << " stones within " << band;
+}
+
 TEST(World, ThreeDimensionalTilesMeetWithoutCrowding) {
     const Exemplar ex = example("spheres_3d");
     World w(ex, world_options(1.2 * TileMaker(ex, world_options(100.0)).min_tile_size()));
