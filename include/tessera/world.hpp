@@ -2,8 +2,10 @@
 //
 // The world is an unbounded grid of square (2D) or cubic (3D) tiles of one size, tile
 // (x, y[, z]) covering [x S, (x + 1) S) x [y S, (y + 1) S) [x [z S, (z + 1) S)]. An element
-// belongs to the tile that holds its centre. Tiles are made in phases of a fixed colouring,
-// phase = (x mod 2) + 2 (y mod 2) [+ 4 (z mod 2)]: 4 phases in 2D, 8 in 3D. Two tiles of one
+// belongs to the tile that holds its centre. Tiles are made in phases of a fixed colouring:
+// phase = (x mod 2) + 2 (y mod 2) in 2D (4 phases); in 3D the 8 parities in Gray-code order,
+// (0,0,0), (1,0,0), (1,1,0), (0,1,0), (0,1,1), (1,1,1), (1,0,1), (0,0,1) (src/world/tiles.cpp
+// says why). Two tiles of one
 // phase never touch (not even at a corner), so each phase's tiles can be made in any order, on
 // any machine. A tile is grown (tessera/grow.hpp, RegionEdge::open) next to the final elements
 // of its neighbours of earlier phases, which it treats as locked: its elements depend only on

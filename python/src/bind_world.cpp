@@ -227,7 +227,7 @@ void bind_tile_maker(py::module_& m) {
         .def(
             "phase",
             [](const tessera::TileMaker& t, const py::handle& c) { return tessera::tile_phase(coord_of(c, t.dimension(), "coord"), t.dimension()); },
-            py::arg("coord"), "The tile's phase: (x mod 2) + 2 (y mod 2) [+ 4 (z mod 2)].")
+            py::arg("coord"), "The tile's phase: (x mod 2) + 2 (y mod 2) in 2D; in 3D the parities in Gray-code order (docs/worlds.md).")
         .def_property_readonly("phases", [](const tessera::TileMaker& t) { return tessera::tile_phases(t.dimension()); })
         .def_property_readonly("margin", &tessera::TileMaker::margin)
         .def_property_readonly("min_tile_size", &tessera::TileMaker::min_tile_size)

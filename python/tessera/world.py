@@ -2,7 +2,7 @@
 
 A world is an unbounded grid of square (2D) or cubic (3D) tiles of one size; tile (x, y[, z])
 covers [x S, (x + 1) S) x [y S, (y + 1) S) [x [z S, (z + 1) S)]. Tiles are made in phases
-((x mod 2) + 2 (y mod 2) [+ 4 (z mod 2)]), each grown next to its finished neighbours of
+((x mod 2) + 2 (y mod 2) in 2D, the parities in Gray-code order in 3D), each grown next to its finished neighbours of
 earlier phases, so a tile depends only on the exemplar, the options, the seed, its
 coordinates and those neighbours: the same tile whatever made it, in which order or where.
 

@@ -208,7 +208,10 @@ TileMaker::TileMaker(const Exemplar& exemplar, const WorldOptions& options) : im
         throw Error(ErrorKind::option, "tile_size: " + format_option_value(options.tile_size) +
                                            " is smaller than the neighbourhood it must hold (" +
                                            short_number(m.min_tile) + " for this exemplar)");
-    m.fingerprint = to_json(exemplar) + "\n" + describe_options(options);
+    // The phase order is part of what a tile is made from: a cache of 3D tiles made in
+    // another order (binary, before the Gray order) belongs to another world.
+    m.fingerprint = to_json(exemplar) + "\n" + describe_options(options) +
+                    (exemplar.dimension == 3 ? "\nphases: gray code order" : "");
 }
 
 TileMaker::~TileMaker() = default;

@@ -15,8 +15,21 @@ std::string TileCoord::describe() const {
     return std::to_string(x) + "," + std::to_string(y) + (z != 0 ? "," + std::to_string(z) : "");
 }
 
+// The phase of a tile: its parities (x, y[, z]) as a binary number in 2D, x the lowest bit,
+// and in Gray-code order in 3D, (0,0,0), (1,0,0), (1,1,0), (0,1,0), (0,1,1), (1,1,1), (1,0,1),
+// (0,0,1), where each phase flips one parity. A tile's dependencies reach one tile further
+// out per phase down a chain, along an axis only where that axis's parity flips: in binary
+// order a 2 x 2 x 2 range of a 3D world needed 203 tiles made, in Gray order 95, the fewest of
+// all 40,320 orders. In 2D Gray order saves little (a 4 x 4 range: 31 tiles for 37) and left
+// deeper holes in random patterns' worlds (Japanese pines, 4 x 4 tiles, seeds 1-5: largest
+// empty circle 0.210-0.263 against 0.186-0.231), so 2D keeps the binary order.
 int tile_phase(const TileCoord& t, int dimension) {
-    return parity(t.x) + 2 * parity(t.y) + (dimension == 3 ? 4 * parity(t.z) : 0);
+    int code = parity(t.x) + 2 * parity(t.y);
+    if (dimension != 3) return code;
+    code += 4 * parity(t.z);
+    code ^= code >> 1;  // the inverse of the Gray code k ^ (k >> 1), for 3 bits
+    code ^= code >> 2;
+    return code;
 }
 
 int tile_phases(int dimension) { return dimension == 3 ? 8 : 4; }

@@ -138,8 +138,23 @@ TEST(World, PhasesColourTheGridSoThatNoTwoTouchingTilesShareOne) {
                 }
     }
     EXPECT_EQ(tile_dependencies({1, 1, 0}, 2).size(), 8u);  // the last phase waits for all its neighbours
+    EXPECT_EQ(tile_dependencies({0, 1, 0}, 3).size(), 8u);  // 3D, Gray order: the 8 of its own layer
+    EXPECT_EQ(tile_dependencies({0, 0, 1}, 3).size(), 26u);
     EXPECT_TRUE(tile_dependencies({0, 0, 0}, 2).empty());
     EXPECT_EQ(tile_at({-0.5, 2.5, 0}, 1.0, 2), (TileCoord{-1, 2, 0}));
+}
+
+// The phases keep the chains of dependencies short: a range asks for few tiles outside it
+// (3D in binary order: 203).
+TEST(World, ARangeNeedsFewTilesOutsideIt) {
+    std::vector<TileCoord> square, cube;
+    for (std::int64_t x = 0; x < 4; ++x)
+        for (std::int64_t y = 0; y < 4; ++y) square.push_back({x, y, 0});
+    for (std::int64_t x = 0; x < 2; ++x)
+        for (std::int64_t y = 0; y < 2; ++y)
+            for (std::int64_t z = 0; z < 2; ++z) cube.push_back({x, y, z});
+    EXPECT_EQ(tile_closure(square, 2).size(), 37u);
+    EXPECT_EQ(tile_closure(cube, 3).size(), 95u);
 }
 
 TEST(World, ATileIsTheSameWhateverOrderAndThreadCountItWasMadeIn) {
