@@ -31,6 +31,33 @@ constexpr int kPushSweeps = 40;
 // border from 1.4x to 1.0x the tile's density; 0.25 left too few there (0.8x), 1.0 changed
 // nothing.
 constexpr double kOpenFaceDepth = 0.5;
+// The gaps of a jammed packing are probed at these shares of the hard core from each of the
+// type's elements, along probe_directions.
+constexpr double kVoidProbe[] = {0.85, 1.0};
+// A type is a packing when its hard core is at least this share of its mean spacing (random
+// sequential adsorption jams at 0.83 in the plane, 0.90 in space; the spheres' exemplar is
+// at 0.99, Poisson disks 0.84): short of its density, it is jammed, and gets its missing
+// elements pushed in. Clustered and random patterns fall short for other reasons, and
+// their gaps are theirs (the spatstat patterns: 0.16 to 0.54; the two-class pebbles 0.52).
+constexpr double kPackedCore = 0.7;
+
+// 12 directions in the plane (30 degrees apart); in space the 26 of the cube's faces, edges
+// and corners, normalized.
+std::vector<Vec3> probe_directions(int dimension) {
+    std::vector<Vec3> out;
+    if (dimension == 2) {
+        for (int k = 0; k < 12; ++k) out.push_back({std::cos(k * M_PI / 6), std::sin(k * M_PI / 6), 0.0});
+        return out;
+    }
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z)
+                if (x || y || z) {
+                    const Vec3 d{static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)};
+                    out.push_back(d / norm(d));
+                }
+    return out;
+}
 
 // The room of an element of type t: its samples' hard-core balls (radius half the type's
 // own sample or centroid hard core), summed.
@@ -51,8 +78,9 @@ public:
         reach_ = g.bounds.has_samples ? std::max(g.reach, 2.0 * g.extent + g.metric.params.spacing) : g.reach;
     }
 
-    // Inserts up to `want` elements of type t; returns how many.
-    int insert(int t, int want) {
+    // Inserts up to `want` elements of type t; returns how many. At the places of the
+    // call's elements of other types, or, `in_voids`, in the gaps between the type's own.
+    int insert(int t, int want, bool in_voids) {
         t_ = t;
         spread_ = type_spacing(t);
         own_ = core::DynamicGrid(spread_, g_.metric.dimension);
@@ -61,20 +89,22 @@ public:
         core_ = g_.hard_core(t, t);
         squeeze_ = !g_.bounds.has_samples && !rare_[t];
         const double floor = squeeze_ ? kSqueeze * core_ : core_;
-        std::priority_queue<std::pair<double, int>> sites;  // farthest first, then the lower index
-        const int end = static_cast<int>(g_.out.size());
-        for (int i = first_; i < end; ++i)
-            if (g_.out[i].type != t && !g_.out[i].locked) sites.push({clearance(g_.out[i].p), -i});
+        if (in_voids)
+            void_sites();
+        else
+            element_sites();
+        std::priority_queue<std::pair<double, int>> queue;  // farthest first, then the lower index
+        for (int k = 0; k < static_cast<int>(sites_.size()); ++k) queue.push({clearance(sites_[k].p), -k});
         int inserted = 0;
-        while (inserted < want && !sites.empty() && sites.top().first >= floor) {
-            const auto [d, minus_i] = sites.top();
-            sites.pop();
-            const double now = clearance(g_.out[-minus_i].p);
+        while (inserted < want && !queue.empty() && queue.top().first >= floor) {
+            const auto [d, minus_k] = queue.top();
+            queue.pop();
+            const double now = clearance(sites_[-minus_k].p);
             if (now < d) {  // an insertion came nearer since: back in line at its distance now
-                sites.push({now, minus_i});
+                queue.push({now, minus_k});
                 continue;
             }
-            if (try_site(-minus_i)) ++inserted;
+            if (try_site(sites_[-minus_k])) ++inserted;
         }
         return inserted;
     }
@@ -122,17 +152,47 @@ private:
         return open;
     }
 
-    // An element of the type at site element i's place (on the layer the type's input
-    // element lies at), shaped as the type's input element nearest i's match.
-    bool try_site(int i) {
-        const OutElement& at = g_.out[i];
-        const int like = at.match >= 0 ? at.match : at.source;
-        const Vec3 near_input = like >= 0 ? g_.input.centroid[like] : Vec3{};
+    // A place to try, and the input element whose nearest of the type it is shaped as.
+    struct Site {
+        Vec3 p;
+        int like = -1;
+    };
+
+    // The places of the call's unlocked elements of other types, each shaped after the input
+    // element it copies.
+    void element_sites() {
+        sites_.clear();
+        for (int i = first_; i < static_cast<int>(g_.out.size()); ++i) {
+            const OutElement& o = g_.out[i];
+            if (o.type != t_ && !o.locked && !is_removed(i)) sites_.push_back({o.p, o.match >= 0 ? o.match : o.source});
+        }
+    }
+
+    // Points around the call's unlocked elements of the type, kVoidProbe hard cores away
+    // along kProbeDirections: the gaps of a packing its growth jammed.
+    void void_sites() {
+        sites_.clear();
+        const std::vector<Vec3> directions = probe_directions(g_.metric.dimension);
+        for (int i = first_; i < static_cast<int>(g_.out.size()); ++i) {
+            const OutElement& o = g_.out[i];
+            if (o.type != t_ || o.locked || is_removed(i)) continue;
+            for (const double r : kVoidProbe)
+                for (const Vec3& u : directions) {
+                    const Vec3 p = o.p + u * (r * core_);
+                    if (region_.inside(p)) sites_.push_back({p, o.match >= 0 ? o.match : o.source});
+                }
+        }
+    }
+
+    // An element of the type at the site (on the layer the type's input element lies at),
+    // shaped as the type's input element nearest the site's.
+    bool try_site(const Site& site) {
+        const Vec3 near_input = site.like >= 0 ? g_.input.centroid[site.like] : Vec3{};
         OutElement e;
         e.type = t_;
         e.source = g_.input.nearest_in_pool(t_, near_input, 1e300);
         if (e.source < 0) return false;
-        e.p = at.p;
+        e.p = site.p;
         g_.register_on_layer(e.source, e.p);
         if (g_.metric.dimension == 2) e.p.z = 0.0;
         e.frame = g_.frame_at(e.p);
@@ -287,6 +347,7 @@ private:
     // make_room's local state: the type's elements around the site (the new element first,
     // id -1), their places during and before the sweeps, whether each may move; and the
     // elements it moves with their new places.
+    std::vector<Site> sites_;
     std::vector<int> ids_, pushed_;
     std::vector<Vec3> pos_, from_, pushed_to_;
     std::vector<char> free_;
@@ -298,16 +359,46 @@ private:
 
 }  // namespace
 
+// The type's elements in the region (the call's and those there before) and the count the
+// exemplar's density asks of it there.
+std::pair<int, double> count_by_density(const Grower::Impl& g, int t, const Domain& region, const std::vector<char>& gone,
+                                         int first) {
+    int have = 0;
+    for (int i = 0; i < static_cast<int>(g.out.size()); ++i) {
+        const bool removed = i >= first && gone[i - first];
+        have += !removed && g.out[i].type == t && region.inside(g.out[i].p);
+    }
+    return {have, g.metric.params.type_density[t] * region.measure()};
+}
+
 TypeCompletion complete_rare_types(Grower::Impl& g, int first, const Domain& region) {
     TypeCompletion result;
     const size_t types = g.exemplar.types.size();
     result.completed.assign(types, 0);
-    if (types < 2 || g.exemplar.elements.empty()) return result;
+    if (g.exemplar.elements.empty()) return result;
     std::vector<double> share(types, 0.0);
     for (const Element& e : g.exemplar.elements) share[e.type] += 1.0 / static_cast<double>(g.exemplar.elements.size());
     std::vector<char> rare(types, 0), gone(g.out.size() - first, 0);
     for (size_t t = 0; t < types; ++t) rare[t] = share[t] > 0.0 && share[t] < kRareShare;
     RareInsertion insertion(g, first, region, rare, gone);
+    const auto record = [&](size_t t, int added, bool squeezed) {
+        result.completed[t] = result.completed[t] || added > 0;
+        result.inserted += added;
+        if (squeezed) result.squeezed += added;
+    };
+    // First the types short of the exemplar's density (a packing growth jammed below it),
+    // then those short of their share: a minority's insertions take the room of the others,
+    // which the share asks for.
+    const bool layered = g.layer[0] || g.layer[1] || g.layer[2];
+    for (size_t t = 0; t < types; ++t) {
+        const bool majority = !g.bounds.has_samples && !layered && share[t] >= kMinorityShare;
+        if (!majority || t >= g.metric.params.type_density.size()) continue;
+        const double spacing = std::pow(1.0 / g.metric.params.type_density[t], 1.0 / g.metric.dimension);
+        if (!(g.hard_core(static_cast<int>(t), static_cast<int>(t)) >= kPackedCore * spacing)) continue;
+        const auto [have, expected] = count_by_density(g, static_cast<int>(t), region, gone, first);
+        if (!(have < kRareShortfall * expected)) continue;
+        record(t, insertion.insert(static_cast<int>(t), static_cast<int>(std::lround(expected)) - have, true), true);
+    }
     for (size_t t = 0; t < types; ++t) {
         const bool minority = !g.bounds.has_samples && share[t] < kMinorityShare;
         if (!rare[t] && !minority) continue;
@@ -319,10 +410,7 @@ TypeCompletion complete_rare_types(Grower::Impl& g, int first, const Domain& reg
         }
         const double expected = share[t] * total;
         if (!(have < kRareShortfall * expected)) continue;
-        const int added = insertion.insert(static_cast<int>(t), static_cast<int>(std::lround(expected)) - have);
-        result.completed[t] = added > 0;
-        result.inserted += added;
-        if (!rare[t]) result.squeezed += added;
+        record(t, insertion.insert(static_cast<int>(t), static_cast<int>(std::lround(expected)) - have, false), !rare[t]);
     }
     result.removed = static_cast<int>(std::count(gone.begin(), gone.end(), 1));
     if (result.removed > 0) g.remove_and_renumber(first, gone);

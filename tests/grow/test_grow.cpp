@@ -419,6 +419,32 @@ TEST(Grow, ThreeDimensionalRodsKeepTheirDensityWithoutHoles) {
     expect_no_crowding(ex, out, "rods");
 }
 
+// A dense random packing of spheres (packing fraction 0.53) is denser than growth packs one
+// element after another (random sequential adsorption jams at 0.38): the rounds left 0.79
+// of the exemplar's density inside the region and holes the size of a sphere; the packing's
+// completion pushes the missing spheres in (grow/rare_types.hpp).
+TEST(Grow, AJammedSpherePackingIsGrownToTheExemplarsDensity) {
+    const Exemplar ex = example("spheres_3d");
+    const Box b = ex.domain.bounds();
+    const Domain region = Domain::box(b.lo, b.lo + b.size() * 2.0, 3);
+    Arrangement out = grown(ex, region);
+    const double density = ex.elements.size() / ex.domain.measure();
+    EXPECT_GT(out.elements.size(), 0.95 * density * region.measure());
+    EXPECT_LT(out.elements.size(), 1.05 * density * region.measure());
+    const Vec3 margin{1.0, 1.0, 1.0};  // a sphere's diameter in from the walls
+    const Vec3 lo = region.bounds().lo + margin, hi = region.bounds().hi - margin;
+    int inside = 0;
+    for (const Element& e : out.elements)
+        inside += e.position.x >= lo.x && e.position.y >= lo.y && e.position.z >= lo.z && e.position.x < hi.x &&
+                  e.position.y < hi.y && e.position.z < hi.z;
+    const Vec3 size = hi - lo;
+    EXPECT_GT(inside / (size.x * size.y * size.z), 0.88 * density) << inside << " spheres inside";
+    out.domain = region;
+    const double hole = largest_empty_circle(out).radius, exemplar_hole = largest_empty_circle(ex).radius;
+    EXPECT_LT(hole, 1.12 * exemplar_hole) << "hole " << hole << " vs the exemplar's " << exemplar_hole;
+    expect_no_crowding(ex, out, "spheres");
+}
+
 TEST(Grow, ThreeDimensionalRodsStayInsideTheirRegion) {
     const Exemplar ex = example("rods_3d");
     const Domain region = ex.domain.scaled(1.6);
