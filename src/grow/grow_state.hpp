@@ -84,6 +84,8 @@ struct Grower::Impl {
     // single-sample elements only (`fills_holes`).
     double hole_radius = 0.0;
     bool fills_holes = false;
+    // The exemplar's clumping (grow/thinning.cpp), measured on first use.
+    std::optional<double> clumping;
     // The final pair-correlation relaxation of grow(region) (grow/relax.hpp): its sweeps
     // (GrowOptions::relax_sweeps, the automatic choice resolved), and the relaxation when
     // there are some (it applies to exemplars of single-sample elements).

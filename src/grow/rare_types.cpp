@@ -34,12 +34,6 @@ constexpr double kOpenFaceDepth = 0.5;
 // The gaps of a jammed packing are probed at these shares of the hard core from each of the
 // type's elements, along probe_directions.
 constexpr double kVoidProbe[] = {0.85, 1.0};
-// A type is a packing when its hard core is at least this share of its mean spacing (random
-// sequential adsorption jams at 0.83 in the plane, 0.90 in space; the spheres' exemplar is
-// at 0.99, Poisson disks 0.84): short of its density, it is jammed, and gets its missing
-// elements pushed in. Clustered and random patterns fall short for other reasons, and
-// their gaps are theirs (the spatstat patterns: 0.16 to 0.54; the two-class pebbles 0.52).
-constexpr double kPackedCore = 0.7;
 
 // 12 directions in the plane (30 degrees apart); in space the 26 of the cube's faces, edges
 // and corners, normalized.
@@ -371,6 +365,13 @@ std::pair<int, double> count_by_density(const Grower::Impl& g, int t, const Doma
     return {have, g.metric.params.type_density[t] * region.measure()};
 }
 
+bool packed(const Grower::Impl& g, int t) {
+    if (t >= static_cast<int>(g.metric.params.type_density.size()) || !(g.metric.params.type_density[t] > 0.0))
+        return false;
+    const double spacing = std::pow(1.0 / g.metric.params.type_density[t], 1.0 / g.metric.dimension);
+    return g.hard_core(t, t) >= kPackedCore * spacing;
+}
+
 TypeCompletion complete_rare_types(Grower::Impl& g, int first, const Domain& region) {
     TypeCompletion result;
     const size_t types = g.exemplar.types.size();
@@ -392,9 +393,8 @@ TypeCompletion complete_rare_types(Grower::Impl& g, int first, const Domain& reg
     const bool layered = g.layer[0] || g.layer[1] || g.layer[2];
     for (size_t t = 0; t < types; ++t) {
         const bool majority = !g.bounds.has_samples && !layered && share[t] >= kMinorityShare;
-        if (!majority || t >= g.metric.params.type_density.size()) continue;
-        const double spacing = std::pow(1.0 / g.metric.params.type_density[t], 1.0 / g.metric.dimension);
-        if (!(g.hard_core(static_cast<int>(t), static_cast<int>(t)) >= kPackedCore * spacing)) continue;
+        if (!majority) continue;
+        if (!packed(g, static_cast<int>(t))) continue;
         const auto [have, expected] = count_by_density(g, static_cast<int>(t), region, gone, first);
         if (!(have < kRareShortfall * expected)) continue;
         record(t, insertion.insert(static_cast<int>(t), static_cast<int>(std::lround(expected)) - have, true), true);

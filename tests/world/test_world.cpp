@@ -302,6 +302,21 @@ TEST(World, ARandomPatternsTilesLeaveNoDeepHoleInside) {
     test::expect_no_crowding(ex, all, "Japanese pines over 4 x 4 tiles");
 }
 
+// Growth overfills an inhibited pattern in every tile (the cells: 1.15x their density over a
+// 4 x 4-tile world); a tile's count is final once it is made, and it is thinned to its share.
+TEST(World, AnInhibitedPatternsTilesKeepItsDensity) {
+    for (const char* name : {"cells", "swedishpines"}) {
+        const Exemplar ex = test::field_pattern(name);
+        const double size = ex.domain.bounds().size().x;
+        World w(ex, world_options(size, 2));
+        const Arrangement all = merged(w, block(4));
+        const double ratio = (all.elements.size() / (16 * size * size)) / (ex.elements.size() / ex.domain.measure());
+        EXPECT_LT(ratio, 1.06) << name << ": " << all.elements.size() << " elements";
+        EXPECT_GT(ratio, 0.94) << name << ": " << all.elements.size() << " elements";
+        test::expect_no_crowding(ex, all, name);
+    }
+}
+
 TEST(World, EveryTileKeepsTheClassShares) {
     const Exemplar ex = example("striped_dots_2d");
     World w(ex, world_options(14.0));
