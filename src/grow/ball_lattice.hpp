@@ -3,6 +3,7 @@
 // region is the share of these points, scaled and moved, that do. Private to growth.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "tessera/vec.hpp"
@@ -20,6 +21,23 @@ inline std::vector<Vec3> unit_ball_lattice(int dimension, int per_axis) {
                 if (dot(p, p) <= 1.0) points.push_back(p);
             }
     return points;
+}
+
+// Unit directions probed around an element: 12 in 2D (30 degrees apart), the 26 of the
+// cube's neighbours in 3D.
+inline std::vector<Vec3> probe_directions(int dimension) {
+    std::vector<Vec3> dirs;
+    if (dimension == 2) {
+        for (int k = 0; k < 12; ++k) dirs.push_back({std::cos(k * M_PI / 6), std::sin(k * M_PI / 6), 0.0});
+        return dirs;
+    }
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z)
+                if (x || y || z)
+                    dirs.push_back(Vec3{double(x), double(y), double(z)} *
+                                   (1.0 / std::sqrt(double(x * x + y * y + z * z))));
+    return dirs;
 }
 
 }  // namespace tessera::grow

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "core/rng.hpp"
+#include "grow/ball_lattice.hpp"
 
 namespace tessera::grow {
 
@@ -32,26 +33,8 @@ constexpr int kPushSweeps = 40;
 // nothing.
 constexpr double kOpenFaceDepth = 0.5;
 // The gaps of a jammed packing are probed at these shares of the hard core from each of the
-// type's elements, along probe_directions.
+// type's elements, along probe_directions (grow/ball_lattice.hpp).
 constexpr double kVoidProbe[] = {0.85, 1.0};
-
-// 12 directions in the plane (30 degrees apart); in space the 26 of the cube's faces, edges
-// and corners, normalized.
-std::vector<Vec3> probe_directions(int dimension) {
-    std::vector<Vec3> out;
-    if (dimension == 2) {
-        for (int k = 0; k < 12; ++k) out.push_back({std::cos(k * M_PI / 6), std::sin(k * M_PI / 6), 0.0});
-        return out;
-    }
-    for (int x = -1; x <= 1; ++x)
-        for (int y = -1; y <= 1; ++y)
-            for (int z = -1; z <= 1; ++z)
-                if (x || y || z) {
-                    const Vec3 d{static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)};
-                    out.push_back(d / norm(d));
-                }
-    return out;
-}
 
 // The room of an element of type t: its samples' hard-core balls (radius half the type's
 // own sample or centroid hard core), summed.

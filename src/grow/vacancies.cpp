@@ -6,29 +6,13 @@
 #include <utility>
 
 #include "core/parallel.hpp"
+#include "grow/ball_lattice.hpp"
 #include "grow/generate.hpp"
 #include "grow/repair.hpp"
 
 namespace tessera::grow {
 
 namespace {
-
-// Directions probed around an element and tested for enclosure: 12 in 2D (30 degrees
-// apart), the 26 of the cube's neighbours in 3D.
-std::vector<Vec3> probe_directions(int dimension) {
-    std::vector<Vec3> dirs;
-    if (dimension == 2) {
-        for (int k = 0; k < 12; ++k) dirs.push_back({std::cos(k * M_PI / 6), std::sin(k * M_PI / 6), 0.0});
-        return dirs;
-    }
-    for (int x = -1; x <= 1; ++x)
-        for (int y = -1; y <= 1; ++y)
-            for (int z = -1; z <= 1; ++z)
-                if (x || y || z)
-                    dirs.push_back(Vec3{double(x), double(y), double(z)} *
-                                   (1.0 / std::sqrt(double(x * x + y * y + z * z))));
-    return dirs;
-}
 
 // A neighbour within this cosine of a direction covers it.
 constexpr double kCover = 0.5;
