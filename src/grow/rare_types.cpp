@@ -67,11 +67,12 @@ public:
         squeeze_ = !g_.bounds.has_samples && !rare_[t];
         const double floor = squeeze_ ? kSqueeze * core_ : core_;
         if (in_voids)
-            void_sites();
+            void_sites(floor);
         else
             element_sites();
         std::priority_queue<std::pair<double, int>> queue;  // farthest first, then the lower index
-        for (int k = 0; k < static_cast<int>(sites_.size()); ++k) queue.push({clearance(sites_[k].p), -k});
+        for (int k = 0; k < static_cast<int>(sites_.size()); ++k)
+            if (const double c = clearance(sites_[k].p); c >= floor) queue.push({c, -k});
         int inserted = 0;
         while (inserted < want && !queue.empty() && queue.top().first >= floor) {
             const auto [d, minus_k] = queue.top();
@@ -146,8 +147,10 @@ private:
     }
 
     // Points around the call's unlocked elements of the type, kVoidProbe hard cores away
-    // along kProbeDirections: the gaps of a packing its growth jammed.
-    void void_sites() {
+    // along probe_directions, that stand `floor` or more from the type's elements: the gaps
+    // of a packing its growth jammed (most probes do not: a million spheres would otherwise
+    // keep 52 million sites).
+    void void_sites(double floor) {
         sites_.clear();
         const std::vector<Vec3> directions = probe_directions(g_.metric.dimension);
         for (int i = first_; i < static_cast<int>(g_.out.size()); ++i) {
@@ -156,7 +159,8 @@ private:
             for (const double r : kVoidProbe)
                 for (const Vec3& u : directions) {
                     const Vec3 p = o.p + u * (r * core_);
-                    if (region_.inside(p)) sites_.push_back({p, o.match >= 0 ? o.match : o.source});
+                    if (region_.inside(p) && clearance(p) >= floor)
+                        sites_.push_back({p, o.match >= 0 ? o.match : o.source});
                 }
         }
     }
