@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include "tessera/option_text.hpp"
 
@@ -191,6 +192,25 @@ tessera::LoadOptions input_load_options(const std::string& input_domain_text, co
     return options;
 }
 
+namespace {
+
+// An observation window that holds none of the input's elements is a wrong window (another
+// axis range, a typo): said here, not later as an empty exemplar or a domain too small.
+void require_elements_inside(const tessera::Exemplar& data, const std::string& path, const std::string& window,
+                             const std::string& flag) {
+    for (const tessera::Element& e : data.elements)
+        if (data.domain.inside(e.position)) return;
+    if (data.elements.empty()) return;  // the loader's own error says so
+    std::ostringstream where;
+    where << "none of the " << data.elements.size() << " elements of " << path << " lies in " << flag << " " << window
+          << " (the first is at " << data.elements.front().position.x << "," << data.elements.front().position.y;
+    if (data.dimension == 3) where << "," << data.elements.front().position.z;
+    where << ")";
+    throw tessera::Error(tessera::ErrorKind::domain, where.str());
+}
+
+}  // namespace
+
 tessera::Exemplar load_input(const std::string& path, const std::string& input_domain_text,
                              const std::string& flag) {
     const tessera::LoadOptions options = input_load_options(input_domain_text, flag);
@@ -210,6 +230,7 @@ tessera::Exemplar load_input(const std::string& path, const std::string& input_d
                                      "D but " + path + " is " + std::to_string(data.dimension) + "D");
         data.domain = *options.input_domain;
     }
+    if (options.input_domain) require_elements_inside(data, path, input_domain_text, flag);
     return data;
 }
 
