@@ -195,7 +195,8 @@ tessera::LoadOptions input_load_options(const std::string& input_domain_text, co
 namespace {
 
 // An observation window that holds none of the input's elements is a wrong window (another
-// axis range, a typo): said here, not later as an empty exemplar or a domain too small.
+// axis range, a typo): said here, not later as an empty exemplar or a domain too small (a
+// CSV's loader says it first; a JSON file's domain is replaced by the flag above).
 void require_elements_inside(const tessera::Exemplar& data, const std::string& path, const std::string& window,
                              const std::string& flag) {
     for (const tessera::Element& e : data.elements)
@@ -218,8 +219,11 @@ tessera::Exemplar load_input(const std::string& path, const std::string& input_d
     try {
         data = tessera::load(path, options);
     } catch (const tessera::Error& e) {
-        // A CSV whose points span no area: say which flag gives the window.
-        if (e.kind() != tessera::ErrorKind::domain || options.input_domain) throw;
+        // A CSV whose points span no area: say which flag gives the window; a window the
+        // data do not fit: say which flag gave it.
+        if (e.kind() != tessera::ErrorKind::domain) throw;
+        if (options.input_domain)
+            throw tessera::Error(e.kind(), std::string(e.what()) + " (" + flag + " " + input_domain_text + ")");
         throw tessera::Error(e.kind(), std::string(e.what()) + " with " + flag);
     }
     if (options.input_domain && extension_of(path) == ".json") {

@@ -20,7 +20,8 @@ namespace tessera {
 
 struct LoadOptions {
     // Observation window for CSV inputs (JSON files carry their own domain).
-    // Unset: the bounding box of the points (an error if it has zero extent).
+    // Unset: the bounding box of the points (an error if it has zero extent). A window that
+    // holds none of the points is an error (Error(domain), naming the file).
     std::optional<Domain> input_domain;
 };
 

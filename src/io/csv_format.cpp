@@ -382,6 +382,12 @@ Domain io_detail::csv_domain(const std::vector<Vec3>& points, int dimension, con
             throw Error(ErrorKind::domain, source + ": the input domain is " +
                                                std::to_string(options.input_domain->dimension()) +
                                                "D but the data are " + std::to_string(dimension) + "D");
+        // A window around none of the points is another axis range or a typo, not data.
+        const bool any_inside = std::any_of(points.begin(), points.end(),
+                                            [&](const Vec3& p) { return options.input_domain->inside(p); });
+        if (!points.empty() && !any_inside)
+            throw Error(ErrorKind::domain, source + ": none of its " + std::to_string(points.size()) +
+                                               " points lies in the input domain");
         return *options.input_domain;
     }
     Vec3 lo = points.front(), hi = lo;

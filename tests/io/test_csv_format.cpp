@@ -181,6 +181,10 @@ TEST(IoCsv, InputDomainOverridesBoundingBox) {
     expect_csv_error("x,y\n1,1\n1,2\n", ErrorKind::domain, "along x");
     options.input_domain = Domain::box({0, 0, 0}, {5, 5, 5}, 3);
     expect_csv_error("x,y\n1,1\n", ErrorKind::domain, "the input domain is 3D but the data are 2D", options);
+    // A window around none of the points (another axis range) is refused, naming the file.
+    options.input_domain = Domain::box({0, 0, 0}, {1, 1, 0}, 2);
+    expect_csv_error("x,y\n1,-0.5\n2,-0.7\n", ErrorKind::domain,
+                     "data/pts.csv: none of its 2 points lies in the input domain", options);
 }
 
 TEST(IoCsv, RoundTripSingleSample2D) {
