@@ -194,9 +194,9 @@ tessera::LoadOptions input_load_options(const std::string& input_domain_text, co
 
 namespace {
 
-// An observation window that holds none of the input's elements is a wrong window (another
-// axis range, a typo): said here, not later as an empty exemplar or a domain too small (a
-// CSV's loader says it first; a JSON file's domain is replaced by the flag above).
+// A JSON file's domain replaced by a window that holds none of its elements is a wrong
+// window (another axis range, a typo): said here, not later as an empty exemplar or a domain
+// too small. A CSV's loader says the same of its points.
 void require_elements_inside(const tessera::Exemplar& data, const std::string& path, const std::string& window,
                              const std::string& flag) {
     for (const tessera::Element& e : data.elements)
@@ -233,8 +233,8 @@ tessera::Exemplar load_input(const std::string& path, const std::string& input_d
                                  flag + " is " + std::to_string(options.input_domain->dimension()) +
                                      "D but " + path + " is " + std::to_string(data.dimension) + "D");
         data.domain = *options.input_domain;
+        require_elements_inside(data, path, input_domain_text, flag);
     }
-    if (options.input_domain) require_elements_inside(data, path, input_domain_text, flag);
     return data;
 }
 

@@ -72,7 +72,7 @@ public:
             element_sites();
         std::priority_queue<std::pair<double, int>> queue;  // farthest first, then the lower index
         for (int k = 0; k < static_cast<int>(sites_.size()); ++k)
-            if (const double c = clearance(sites_[k].p); c >= floor) queue.push({c, -k});
+            if (sites_[k].clearance >= floor) queue.push({sites_[k].clearance, -k});
         int inserted = 0;
         while (inserted < want && !queue.empty() && queue.top().first >= floor) {
             const auto [d, minus_k] = queue.top();
@@ -134,6 +134,7 @@ private:
     struct Site {
         Vec3 p;
         int like = -1;
+        double clearance = 0.0;  // when the sites were gathered
     };
 
     // The places of the call's unlocked elements of other types, each shaped after the input
@@ -142,7 +143,8 @@ private:
         sites_.clear();
         for (int i = first_; i < static_cast<int>(g_.out.size()); ++i) {
             const OutElement& o = g_.out[i];
-            if (o.type != t_ && !o.locked && !is_removed(i)) sites_.push_back({o.p, o.match >= 0 ? o.match : o.source});
+            if (o.type != t_ && !o.locked && !is_removed(i))
+                sites_.push_back({o.p, o.match >= 0 ? o.match : o.source, clearance(o.p)});
         }
     }
 
@@ -159,8 +161,8 @@ private:
             for (const double r : kVoidProbe)
                 for (const Vec3& u : directions) {
                     const Vec3 p = o.p + u * (r * core_);
-                    if (region_.inside(p) && clearance(p) >= floor)
-                        sites_.push_back({p, o.match >= 0 ? o.match : o.source});
+                    if (!region_.inside(p)) continue;
+                    if (const double c = clearance(p); c >= floor) sites_.push_back({p, o.match >= 0 ? o.match : o.source, c});
                 }
         }
     }
