@@ -77,6 +77,10 @@ struct DynamicOptions {
     // exemplar's closest-pair distance without gravity, which pushes apart the ones that
     // collided and out of the domain's obstacles the ones that went into them.
     bool physics = false;
+    // Frame by frame, voids wider than any the exemplar holds (a flow opens them, past an
+    // obstacle above all) are closed from their rim, a tenth of a spacing at a time
+    // (dynamic/void_closing.hpp); true = leave them (the paper's method as it is).
+    bool keep_voids = false;
     // Graph synthesis (section 4.3, tessera/graph_motion.hpp): motion for a still, more for a
     // short clip. -1 = automatic (a one-frame exemplar is enriched to 24 frames), 0 = off,
     // N >= 2 = the exemplar continued to N frames (extend_by_graph: a clip of F < N frames

@@ -87,6 +87,11 @@ void add_solver_rows(OptionTable<O>& t) {
                             "exemplar's closest pair: frame by frame after each advection and each frame's "
                             "assignment; all frames after each round's assignment, on every frame.",
                             [](auto& o) -> auto& { return o.physics; }));
+    t.push_back(flag_row<O>("keep_voids",
+                            "Frame by frame: leave the voids wider than any the exemplar holds (a flow opens them, "
+                            "past an obstacle above all); off = they are closed by moving the samples round them "
+                            "towards their centre, a tenth of a spacing at a time.",
+                            [](auto& o) -> auto& { return o.keep_voids; }));
 }
 
 // All-frame synthesis on a coarse motion (synthesize_on_coarse).

@@ -19,6 +19,7 @@
 #include "dynamic/obstacle_flow.hpp"
 #include "dynamic/output_frames.hpp"
 #include "dynamic/synthesize_all_frames.hpp"
+#include "dynamic/void_closing.hpp"
 #include "tessera/det.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -154,6 +155,8 @@ public:
             build_similarity(input_, params, similarity_k, similarity_scan, options.seed, options.threads);
         for (size_t s = 0; s < first.samples.size(); ++s) out_.current()[s] = first.samples[s].p;
         if (options.physics) collisions_.emplace(exemplar, domain, options.wrap);
+        if (!options.keep_voids)
+            voids_.emplace(exemplar, domain, params.spacing, periodic_of(domain, options));
         // A box that wraps has no walls: nothing to weigh, and no point paying the test.
         const bool walls = !(options.wrap && domain.kind() == Domain::Kind::box);
         settings_.domain = walls ? &domain : nullptr;
@@ -175,6 +178,9 @@ public:
     // search's energy.
     double next_frame(const Vec3& flow_step) {
         advect(input_, out_, flow_, flow_step, domain_, options_.wrap);
+        // The voids are closed before the rounds too: once after them, the assignment pulled
+        // the moved rim back towards its neighbours (the void past the obstacle held on).
+        if (voids_) close_voids();
         if (options_.physics) resolve_collisions();
         double energy = 0.0;
         for (int round = 0; round < options_.iterations; ++round) {
@@ -185,6 +191,7 @@ public:
             for (int s = 0; s < out_.size(); ++s)
                 keep_inside(out_.current()[s], out_.current_shift()[s], domain_, options_.wrap);
         }
+        if (voids_) close_voids();
         if (options_.physics && options_.iterations > 0) resolve_collisions();
         return energy;
     }
@@ -192,8 +199,22 @@ public:
     // The frame just made, as positions; then the next frame starts from it.
     const std::vector<Vec3>& positions() const { return out_.current(); }
     void commit() { out_.commit(); }
+    // What the void closing did over the run, for the stats' notes ("" when it moved nothing).
+    std::string void_note(int frames) const {
+        if (!voids_ || moved_ == 0) return "";
+        return "voids wider than the exemplar's (" + std::to_string(voids_->exemplar_void()) +
+               ") closed from their rim: " + std::to_string(moved_) + " sample moves over " +
+               std::to_string(frames) + " frames";
+    }
 
 private:
+    // The extra step of void_closing.hpp: the rim of each void too wide moves in a little.
+    void close_voids() {
+        moved_ += voids_->apply(out_.current());
+        for (int s = 0; s < out_.size(); ++s)
+            keep_inside(out_.current()[s], out_.current_shift()[s], domain_, options_.wrap);
+    }
+
     // The physics sub-step (Figure 5): what it moves is detail motion, so the samples'
     // flow shifts stay; a sample pushed across the wrap seam re-enters as advection's do.
     void resolve_collisions() {
@@ -214,6 +235,8 @@ private:
     OutputFrames out_;
     ObstacleFlow flow_;
     std::optional<CollisionStep> collisions_;  // the physics sub-step, when asked for
+    std::optional<VoidClosing> voids_;         // the void closing, unless turned off
+    long moved_ = 0;                           // samples it moved, over the run
     std::vector<SearchScratch> scratch_;
     SearchSettings settings_;
 };
@@ -275,6 +298,7 @@ AnimatedArrangement synthesize_dynamic(const Animation& given, const Domain& dom
         if (progress && !progress(ProgressEvent{"frame", f, frames, energy, elapsed(), 0.2 + 0.8 * (f + 1) / frames}))
             throw Cancelled();
     }
+    if (const std::string note = run.void_note(frames); !note.empty()) result.stats.notes.push_back(note);
     for (Sample& s : result.structure.samples) s.time = result.times.front();
     result.stats.final_energy = result.stats.energy.back();
     result.stats.total_seconds = elapsed();
