@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 
 namespace tessera::dynamic {
 
@@ -25,6 +24,20 @@ double nearest_distance(const core::SpatialGrid& grid, const Vec3& p, double rea
     return std::sqrt(best);
 }
 
+// Whether samples within `reach` of p lie in every orthant round it (quadrant in 2D, octant
+// in 3D): p is then inside the samples, not in a band along their edge.
+bool surrounded(const core::SpatialGrid& grid, const std::vector<Vec3>& points, const Vec3& p, double reach,
+                int dimension) {
+    unsigned seen = 0;
+    grid.for_each_within(p, reach, [&](int i, double) {
+        unsigned orthant = 0;
+        for (int k = 0; k < dimension; ++k)
+            if (points[i][k] > p[k]) orthant |= 1u << k;
+        seen |= 1u << orthant;
+    });
+    return seen == (1u << (1 << dimension)) - 1;
+}
+
 }  // namespace
 
 VoidClosing::VoidClosing(const Animation& exemplar, const Domain& domain, double spacing, const Periodic& periodic)
@@ -37,27 +50,40 @@ VoidClosing::VoidClosing(const Animation& exemplar, const Domain& domain, double
     const int measured = std::min(frames, measured_frames);
     std::vector<Vec3> points;
     core::SpatialGrid grid;
-    std::vector<std::pair<double, double>> seen;  // (nearest sample, wall) of every probe of every frame
+    double nn_sum = 0.0, nn_sum2 = 0.0;
+    long nn_count = 0;
     for (int i = 0; i < measured; ++i) {
         const int f = measured == 1 ? 0 : static_cast<int>(static_cast<long>(i) * (frames - 1) / (measured - 1));
         const Vec3* first = &exemplar.at(f, 0);
         points.assign(first, first + exemplar.sample_count());
         grid.build(points, 1.5 * spacing, dimension_);
-        for (int k = 0; k < window_probes.size(); ++k)
-            if (window_probes.inside(k)) {
-                const Vec3 p = window_probes.point(k);
-                seen.emplace_back(nearest_distance(grid, p, largest_reach * spacing), window.distance_to_boundary(p));
-            }
+        for (int s = 0; s < exemplar.sample_count(); ++s) {
+            double nearest2 = 4.0 * spacing * spacing;
+            grid.for_each_within(points[s], 2.0 * spacing, [&](int o, double d2) {
+                if (o != s) nearest2 = std::min(nearest2, d2);
+            });
+            nn_sum += std::sqrt(nearest2), nn_sum2 += nearest2, ++nn_count;
+        }
+        for (int k = 0; k < window_probes.size(); ++k) {
+            if (!window_probes.inside(k)) continue;
+            // Disks inside the window and surrounded by samples only: the window's sides are
+            // where the exemplar was cut out, or where a drifting exemplar left its window
+            // behind (drifting_lattice_2d: an empty band 1.03 wide, twice its voids), not walls.
+            const Vec3 p = window_probes.point(k);
+            const double wall = window.distance_to_boundary(p);
+            if (wall <= exemplar_void_) continue;
+            const double empty = std::min(wall, nearest_distance(grid, p, wall));
+            if (empty > exemplar_void_ && surrounded(grid, points, p, empty + spacing, dimension_))
+                exemplar_void_ = empty;
+        }
     }
-    // The widest void by the rule apply() follows (a void may reach beyond a wall by the
-    // allowance, a share of the widest void itself), so that the exemplar's own frames are
-    // left as they are: the fixed point, from the voids that stay off the window's sides.
-    for (int round = 0; round < 8; ++round) {
-        double widest = 0.0;
-        for (const auto& [nearest, wall] : seen) widest = std::max(widest, std::min(nearest, wall + wall_allowance * exemplar_void_));
-        if (widest <= exemplar_void_) break;
-        exemplar_void_ = widest;
-    }
+    // A move may not bring a sample nearer to another than one standard deviation under the
+    // exemplar's mean nearest-neighbour distance: where the exemplar's spacing is that even
+    // (a lattice), a void cannot close without crowding (the ring round a vacancy pressed
+    // into itself and the lattice broke up round it), and it is left.
+    const double mean = nn_count > 0 ? nn_sum / nn_count : spacing;
+    const double variance = nn_count > 0 ? std::max(0.0, nn_sum2 / nn_count - mean * mean) : 0.0;
+    closest_pair_ = mean - std::sqrt(variance);
     // A window too small to hold a probe away from its walls tells nothing: half a spacing.
     exemplar_void_ = std::max(exemplar_void_, 0.5 * spacing);
     probes_ = ProbeLattice(domain, step, periodic.on);
@@ -76,6 +102,23 @@ double VoidClosing::wall_distance(const Vec3& p) const {
 
 double VoidClosing::wall_bound(const Vec3& p) const {
     return wall_distance(p) + wall_allowance * exemplar_void_;
+}
+
+// Whether moving image point i by `move` brings it closer than closest_pair_ to a sample it
+// is approaching. Samples already moved count where they are.
+bool VoidClosing::crowds(int i, const Vec3& move, const std::vector<Vec3>& positions) const {
+    const int s = images_.sample[i];
+    const Vec3 from = images_.points[i], to = from + move;
+    const double close2 = closest_pair_ * closest_pair_;
+    bool crowded = false;
+    grid_.for_each_within(to, closest_pair_ + norm(move), [&](int j, double) {
+        const int o = images_.sample[j];
+        if (o == s || crowded) return;
+        const Vec3 q = images_.points[j] + (positions[o] - built_[o]);
+        const double after = squared_norm(q - to);
+        crowded = after < close2 && after < squared_norm(q - from);
+    });
+    return crowded;
 }
 
 int VoidClosing::apply(std::vector<Vec3>& positions) {
@@ -104,6 +147,7 @@ int VoidClosing::apply(std::vector<Vec3>& positions) {
     std::sort(voids_.begin(), voids_.end(),
               [](const Probe& a, const Probe& b) { return a.empty != b.empty ? a.empty > b.empty : a.index < b.index; });
     claimed_.assign(n, 0);
+    built_ = positions;
     int moved = 0;
     for (const Probe& v : voids_) {
         const Vec3 centre = probes_.point(v.index);
@@ -112,7 +156,9 @@ int VoidClosing::apply(std::vector<Vec3>& positions) {
             const int s = images_.sample[i];
             if (claimed_[s] || !(d2 > 0.0)) return;
             claimed_[s] = 1;
-            positions[s] += (centre - images_.points[i]) * (step / std::sqrt(d2));
+            const Vec3 move = (centre - images_.points[i]) * (step / std::sqrt(d2));
+            if (crowds(i, move, positions)) return;
+            positions[s] += move;
             ++moved;
         });
     }

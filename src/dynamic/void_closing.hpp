@@ -32,7 +32,8 @@ public:
     // The exemplar's largest empty radius: voids up to it are left alone.
     double exemplar_void() const { return exemplar_void_; }
     // Moves each sample on the rim of a void wider than the exemplar's towards the void's
-    // centre by at most a tenth of a spacing (less when the void is only a little too wide).
+    // centre by at most a tenth of a spacing (less when the void is only a little too wide),
+    // unless that brings it nearer to another than the exemplar's spacing, less its deviation.
     // Returns the number of samples moved.
     int apply(std::vector<Vec3>& positions);
 
@@ -43,6 +44,7 @@ private:
     };
 
     double wall_distance(const Vec3& p) const;
+    bool crowds(int i, const Vec3& move, const std::vector<Vec3>& positions) const;
     // How wide a void at p may be for the walls: its distance to them plus the allowance.
     double wall_bound(const Vec3& p) const;
 
@@ -50,12 +52,15 @@ private:
     Periodic periodic_;
     int dimension_ = 2;
     double spacing_ = 1.0, exemplar_void_ = 0.0;
+    double closest_pair_ = 0.0;           // no move brings two samples nearer (the exemplar's mean
+                                          // nearest-neighbour distance less its deviation)
     ProbeLattice probes_;                 // over the output domain
     std::vector<int> open_;               // probes no sample's disk of the exemplar's void covers
     PeriodicImages images_;               // the frame's samples (with their periodic images)
     core::SpatialGrid grid_;              // over images_.points
     std::vector<Probe> voids_;
     std::vector<char> claimed_;
+    std::vector<Vec3> built_;             // the positions the grid was built over
 };
 
 }  // namespace tessera::dynamic

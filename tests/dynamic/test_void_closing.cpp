@@ -66,16 +66,16 @@ TEST(VoidClosing, AVoidWiderThanTheExemplarsIsClosedFromItsRim) {
     const std::vector<Vec3> before = points;
     VoidClosing voids(exemplar, domain, 1.0, {});
     EXPECT_GT(voids.exemplar_void(), 0.5);
-    // A lattice's voids: a little over half a spacing inside, 0.93 by the band of 1.37 that
-    // its window leaves above its last row (a void may reach half of itself beyond a wall).
-    EXPECT_LT(voids.exemplar_void(), 1.0);
+    EXPECT_LT(voids.exemplar_void(), 0.8);  // a lattice's voids: a little over half a spacing
     const double hole_before = largest_empty_radius(points, domain, 0.05);
     EXPECT_GT(hole_before, 2.2);
     voids.apply(points);
     for (size_t s = 0; s < points.size(); ++s) EXPECT_LE(norm(points[s] - before[s]), 0.1 + 1e-12) << "sample " << s;
     for (int frame = 1; frame < 40; ++frame) voids.apply(points);
     const double hole_after = largest_empty_radius(points, domain, 0.05);
-    EXPECT_LT(hole_after, 1.2 * voids.exemplar_void()) << "from " << hole_before;  // 2.29 -> 0.84 (0.79)
+    // 2.29 -> 0.81 (the exemplar's widest 0.59): the rest of it would be a vacancy that the
+    // lattice cannot close without crowding its ring, and the step leaves it.
+    EXPECT_LT(hole_after, 1.5 * voids.exemplar_void()) << "from " << hole_before;
     // The samples far from the void stay where they were. (The rim crowds as it closes in,
     // which the assignment evens out in synthesis: the last test.)
     for (size_t s = 0; s < points.size(); ++s) {
@@ -91,7 +91,9 @@ TEST(VoidClosing, TheExemplarsOwnVoidsAreKept) {
     tessera::Animation exemplar = dynamic_test::drifting_lattice(12, 12, 4, {}, 0.05);
     for (Vec3& p : exemplar.positions) p = Vec3{std::floor(p.x / 4) * 4 + 0.5 * std::fmod(p.x, 4.0), p.y, 0};
     const tessera::Box window = exemplar.structure.domain.bounds();
-    exemplar.structure.domain = Domain::box(window.lo, {10.5, window.hi.y, 0}, 2);  // up to the last clump
+    // The window up to the last clump and the last row: bands wider than the exemplar's voids
+    // along its sides would be voids by the rule of the walls.
+    exemplar.structure.domain = Domain::box(window.lo, {10.5, window.hi.y - 0.87, 0}, 2);
     VoidClosing voids(exemplar, exemplar.structure.domain, 1.0, {});
     EXPECT_GT(voids.exemplar_void(), 0.9);
     for (int f = 0; f < exemplar.frame_count(); ++f) {
