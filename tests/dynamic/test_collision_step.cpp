@@ -10,6 +10,7 @@
 #include <string>
 
 #include "dynamic/collision_step.hpp"
+#include "dynamic/obstacle_demo.hpp"
 #include "tessera/animation_io.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -78,15 +79,8 @@ int close_pairs(const tessera::Animation& a, int f, double distance) {
 
 // Figure 5: the swirl particles carried past the round obstacle, with and without the step.
 TEST(CollisionStep, FewerCollisionsPastAnObstacleWithThePhysicsSubStep) {
-    const std::string root = std::string(TESSERA_SOURCE_DIR) + "/examples/dynamic/";
-    const tessera::Animation exemplar = tessera::load_animation(root + "swirl_particles_2d.json");
-    const Domain domain = tessera::load_domain_json(root + "obstacle_channel.json", 2);
+    auto [exemplar, domain, options] = dynamic_test::obstacle_demo(32);
     const double collision = 2.0 * tessera::dynamic::exemplar_collision_radius(exemplar, CollisionStep::closest_quantile);
-    tessera::DynamicOptions options;
-    options.frames = 32;
-    options.flow = {1.5, 0, 0};
-    options.wrap = true;
-    options.threads = 2;
     const auto collisions = [&](bool physics) {
         options.physics = physics;
         const tessera::AnimatedArrangement out = tessera::synthesize_dynamic(exemplar, domain, options);

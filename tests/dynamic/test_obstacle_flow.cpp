@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "dynamic/obstacle_demo.hpp"
 #include "dynamic/obstacle_flow.hpp"
 #include "tessera/animation_io.hpp"
 #include "tessera/dynamic.hpp"
@@ -18,7 +19,9 @@ using tessera::Domain;
 using tessera::Vec3;
 using tessera::dynamic::ObstacleFlow;
 
-constexpr double hole_x = 10.0, hole_y = 7.3, hole_r = 2.5;  // examples/dynamic/obstacle_channel.json
+using dynamic_test::hole_r;
+using dynamic_test::hole_x;
+using dynamic_test::hole_y;
 
 // The 30 x 15 channel with a round obstacle of radius 2.5 the demo uses.
 Domain channel() {
@@ -87,14 +90,7 @@ TEST(ObstacleFlow, WhatFlowsIntoABoxRoundTheObstacleFlowsOut) {
 // The demo's run: swirl particles carried past the obstacle. Particles that only slid along
 // the wall left an empty wake behind it; the flow round the obstacle closes it.
 TEST(ObstacleFlow, ParticlesCarriedPastAnObstacleFillItsWake) {
-    const std::string root = std::string(TESSERA_SOURCE_DIR) + "/examples/dynamic/";
-    const tessera::Animation exemplar = tessera::load_animation(root + "swirl_particles_2d.json");
-    const Domain domain = tessera::load_domain_json(root + "obstacle_channel.json", 2);
-    tessera::DynamicOptions options;
-    options.frames = 48;
-    options.flow = {1.5, 0, 0};
-    options.wrap = true;
-    options.threads = 2;
+    const auto [exemplar, domain, options] = dynamic_test::obstacle_demo(48);
     const tessera::AnimatedArrangement out = tessera::synthesize_dynamic(exemplar, domain, options);
     const int last = out.frame_count() - 1;
     // Density in the wake (a hole-sized box just behind the obstacle) against the whole domain's.
@@ -114,16 +110,9 @@ TEST(ObstacleFlow, ParticlesCarriedPastAnObstacleFillItsWake) {
 // particles were only kept out of the obstacle: they piled up on its front (7 within 0.35 of
 // its rim at frame 0, 11 at frame 31) and its wake emptied (0.78 of the domain's density).
 TEST(ObstacleFlow, AllFramesSequencingAlsoFlowsRoundTheObstacle) {
-    const std::string root = std::string(TESSERA_SOURCE_DIR) + "/examples/dynamic/";
-    const tessera::Animation exemplar = tessera::load_animation(root + "swirl_particles_2d.json");
-    const Domain domain = tessera::load_domain_json(root + "obstacle_channel.json", 2);
-    tessera::DynamicOptions options;
+    auto [exemplar, domain, options] = dynamic_test::obstacle_demo(32);
     options.sequencing = tessera::Sequencing::all;
-    options.frames = 32;
     options.iterations = 3;
-    options.flow = {1.5, 0, 0};
-    options.wrap = true;
-    options.threads = 2;
     const tessera::AnimatedArrangement out = tessera::synthesize_dynamic(exemplar, domain, options);
     const double density = out.sample_count() / domain.measure(), wake_area = 4 * hole_r * hole_r;
     const auto rim_count = [&](int f) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dynamic/dynamic_fixtures.hpp"
+#include "dynamic/obstacle_demo.hpp"
 #include "dynamic/void_closing.hpp"
 #include "tessera/animation_io.hpp"
 #include "tessera/dynamic.hpp"
@@ -32,7 +33,8 @@ double largest_empty_radius(const std::vector<Vec3>& points, const Domain& domai
             const Vec3 p{x, y, 0};
             if (!domain.inside(p)) continue;
             // A box that wraps has no walls; the channel's walls are its obstacle's.
-            double empty = periodic.on ? std::hypot(x - 10.0, y - 7.3) - 2.5 : domain.distance_to_boundary(p);
+            using namespace dynamic_test;
+            double empty = periodic.on ? std::hypot(x - hole_x, y - hole_y) - hole_r : domain.distance_to_boundary(p);
             if (empty <= largest) continue;
             for (const Vec3& q : points) {
                 Vec3 d = q - p;
@@ -107,14 +109,7 @@ TEST(VoidClosing, TheExemplarsOwnVoidsAreKept) {
 // circle grew from the exemplar's 0.92 to 1.6 (seed 1; 1.4-1.8 for seeds 1 to 3). With the
 // step it stays under 1.08.
 TEST(VoidClosing, NoVoidPastAnObstacleGrowsWiderThanTheExemplars) {
-    const std::string root = std::string(TESSERA_SOURCE_DIR) + "/examples/dynamic/";
-    const tessera::Animation exemplar = tessera::load_animation(root + "swirl_particles_2d.json");
-    const Domain domain = tessera::load_domain_json(root + "obstacle_channel.json", 2);
-    tessera::DynamicOptions options;
-    options.frames = 72;
-    options.flow = {1.5, 0, 0};
-    options.wrap = true;
-    options.threads = 2;
+    auto [exemplar, domain, options] = dynamic_test::obstacle_demo(72);
     const Periodic periodic{true, domain.bounds().lo, domain.bounds().size()};
     const double exemplar_void = VoidClosing(exemplar, domain, 0.83, periodic).exemplar_void();
     // The widest void over frames 48-71, and the closest pair.
