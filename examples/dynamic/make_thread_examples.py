@@ -8,8 +8,8 @@ noodles_coarse_2d.json   24 straight noodles hanging from a fork that swings the
                          coarse motion duplicated for every noodle, as in the paper's Figure 10.
 paper_3d.json            4 paper sheets of 6 x 6 samples (spacing 0.2) fluttering with waves
                          across them while they drift down: the exemplar.
-paper_coarse_3d.json     12 flat sheets falling on spirals and tumbling slowly: the coarse
-                         motion (Figure 13).
+paper_coarse_3d.json     12 flat sheets falling on spirals and tumbling slowly, never through
+                         each other: the coarse motion (Figure 13).
 
 Run from this folder: python3 make_thread_examples.py (deterministic: a fixed seed).
 """
@@ -117,23 +117,35 @@ def fluttering_paper(seed=7, count=4, side=6, spacing=0.2, frames=40, dt=0.1):
           elements, frames, dt)
 
 
-def tumbling_sheets(seed=11, count=12, side=6, spacing=0.2, frames=60, dt=0.1):
+def tumbling_sheets(seed=11, count=12, side=6, spacing=0.2, frames=60, dt=0.1, apart=1.5):
+    """Sheets whose centres stay `apart` (more than a sheet's diagonal, 1.41) in every frame:
+    the coarse motion never passes two sheets through each other (drawn again until so)."""
     rng = random.Random(seed)
-    elements = []
+    elements, paths = [], []
+
+    def centre_at(start, phase, t):
+        return (start[0] + 0.4 * math.cos(1.5 * t + phase), start[1] + 0.4 * math.sin(1.5 * t + phase),
+                start[2] - 0.5 * t)
+
     for n in range(count):
-        start = (rng.uniform(0.5, 5.5), rng.uniform(0.5, 5.5), rng.uniform(4.5, 6.0))
-        spin, tilt, phase = rng.uniform(0.4, 0.9), rng.uniform(0.3, 0.6), rng.uniform(0, 6.3)
+        for _ in range(10000):
+            start = (rng.uniform(0.5, 5.5), rng.uniform(0.5, 5.5), rng.uniform(4.0, 6.0))
+            spin, tilt, phase = rng.uniform(0.4, 0.9), rng.uniform(0.3, 0.6), rng.uniform(0, 6.3)
+            path = [centre_at(start, phase, f * dt) for f in range(frames)]
+            if all(math.dist(path[f], other[f]) >= apart for other in paths for f in range(frames)):
+                break
+        else:
+            raise SystemExit("tumbling_sheets: no room for sheet %d" % n)
+        paths.append(path)
         track = []
         for f in range(frames):
             t = f * dt
-            centre = (start[0] + 0.4 * math.cos(1.5 * t + phase), start[1] + 0.4 * math.sin(1.5 * t + phase),
-                      start[2] - 0.5 * t)
             yaw, pitch = spin * t + phase, tilt * math.sin(1.3 * t + phase)
             pts = []
             for r in range(side):
                 for c in range(side):
                     p = rotate(((c - (side - 1) / 2) * spacing, (r - (side - 1) / 2) * spacing, 0.0), yaw, pitch)
-                    pts.append(tuple(centre[i] + p[i] for i in range(3)))
+                    pts.append(tuple(path[f][i] + p[i] for i in range(3)))
             track.append(pts)
         elements.append(("paper", track))
     write("paper_coarse_3d.json",
