@@ -13,6 +13,7 @@
 #include "dynamic/detail_field.hpp"
 #include "dynamic/detail_patches.hpp"
 #include "dynamic/element_contacts.hpp"
+#include "dynamic/sheet_sides.hpp"
 #include "dynamic/element_lengths.hpp"
 #include "dynamic/graph_exemplar.hpp"
 #include "dynamic/local_frames.hpp"
@@ -132,23 +133,27 @@ void decompose_into(const Animation& coarse, const std::vector<LocalFrame>& fram
     for (size_t k = 0; k < p.size(); ++k) out.detail[k] = frames[k].to_local(p[k] - coarse.positions[k]);
 }
 
-// Rest lengths and contacts between elements (element_contacts.hpp), alternated so that
-// both hold together (each pass of one disturbs the other a little): lengths last, so that
-// threads and sheets end at their rest lengths.
+// Rest lengths, contacts between elements (element_contacts.hpp) and the sides of sheets
+// (sheet_sides.hpp), alternated so that all hold together (each pass of one disturbs the
+// others a little): lengths last, so that threads and sheets end at their rest lengths.
 struct Constraints {
     const std::vector<std::vector<Edge>>& edges;
     const std::vector<Vec3>& coarse;
     std::vector<int> element_of;
+    std::vector<std::array<int, 3>> sheet_triangles;  // 3D sheets only
     int frames = 0, samples = 0, dimension = 2, threads = 0;
     double contact = 0.0;
 
-    void apply(std::vector<Vec3>& p, LengthReport& lengths, ContactReport& contacts) const {
+    void apply(std::vector<Vec3>& p, LengthReport& lengths, ContactReport& contacts, ContactReport& sides) const {
         for (int pass = 0; pass < constraint_passes; ++pass) {
             lengths = keep_lengths(p, frames, samples, edges, length_tolerance, length_sweeps, threads);
             contacts = keep_apart(p, coarse, element_of, frames, samples, dimension, contact, contact_tolerance,
                                   contact_sweeps, threads);
-            // The last lengths pass left the contacts within tolerance: nothing more to alternate.
-            if (contacts.first_gap <= contact_tolerance * contact) break;
+            sides = keep_sides(p, coarse, sheet_triangles, element_of, frames, samples, contact, contact_tolerance,
+                               contact_sweeps, threads);
+            // The last lengths pass left the contacts and sides within tolerance: nothing more to alternate.
+            const double tolerance = contact_tolerance * contact;
+            if (contacts.first_gap <= tolerance && sides.first_gap <= tolerance) break;
         }
         lengths = keep_lengths(p, frames, samples, edges, length_tolerance, length_sweeps, threads);
     }
@@ -226,13 +231,14 @@ AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation
     const Constraints constraints{edges,
                                   coarse.positions,
                                   element_of_samples(coarse.structure),
+                                  dimension == 3 ? sheet_triangles(out_grid) : std::vector<std::array<int, 3>>{},
                                   out.frames,
                                   out.samples,
                                   coarse.structure.dimension,
                                   options.threads,
                                   exemplar_contact_distance(exemplar, contact_quantile)};
     LengthReport lengths;
-    ContactReport contacts;
+    ContactReport contacts, sides;
     std::vector<Vec3> positions = compose(coarse, frames, out);
     for (int round = 0; round < options.iterations; ++round) {
         const double round_start = elapsed();
@@ -241,7 +247,7 @@ AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation
         std::swap(matches, next);
         out.detail = assign_details(in, out, matches, offsets, options.threads, &cross);
         positions = compose(coarse, frames, out);
-        constraints.apply(positions, lengths, contacts);
+        constraints.apply(positions, lengths, contacts, sides);
         decompose_into(coarse, frames, positions, out);
         result.stats.energy.push_back(energy);
         result.stats.iteration_seconds.push_back(elapsed() - round_start);
@@ -249,11 +255,11 @@ AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation
                                                 double(round + 1) / options.iterations}))
             throw Cancelled();
     }
-    if (options.iterations == 0) constraints.apply(positions, lengths, contacts);
+    if (options.iterations == 0) constraints.apply(positions, lengths, contacts, sides);
     result.structure = coarse.structure;
     result.times = coarse.times;
     result.positions = std::move(positions);
-    result.stats.solver_bound_hits = lengths.bound_hits + contacts.bound_hits;
+    result.stats.solver_bound_hits = lengths.bound_hits + contacts.bound_hits + sides.bound_hits;
     if (lengths.bound_hits > 0)
         result.stats.notes.push_back(std::to_string(lengths.bound_hits) + " element-frames stopped at the bound of " +
                                      std::to_string(length_sweeps) + " length sweeps (worst strain " +
@@ -262,6 +268,10 @@ AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation
         result.stats.notes.push_back(std::to_string(contacts.bound_hits) + " frames stopped at the bound of " +
                                      std::to_string(contact_sweeps) + " contact sweeps (largest gap left " +
                                      std::to_string(contacts.worst_gap) + ")");
+    if (sides.bound_hits > 0)
+        result.stats.notes.push_back(std::to_string(sides.bound_hits) + " frames stopped at the bound of " +
+                                     std::to_string(contact_sweeps) + " sweeps keeping samples off the sheets (largest " +
+                                     "shortfall left " + std::to_string(sides.worst_gap) + ")");
     result.stats.notes.insert(result.stats.notes.begin(), graph_notes.begin(), graph_notes.end());
     result.stats.final_energy = result.stats.energy.empty() ? 0.0 : result.stats.energy.back();
     result.stats.total_seconds = elapsed();
