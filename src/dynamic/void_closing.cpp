@@ -86,7 +86,10 @@ VoidClosing::VoidClosing(const Animation& exemplar, const Domain& domain, double
     closest_pair_ = mean - std::sqrt(variance);
     // A window too small to hold a probe away from its walls tells nothing: half a spacing.
     exemplar_void_ = std::max(exemplar_void_, 0.5 * spacing);
-    probes_ = ProbeLattice(domain, step, periodic.on);
+    // Probes a sixth of the widest void apart at most (a quarter in 3D), not finer than the
+    // exemplar's: where its voids span spacings (clustered seedlings: redwood), a disk stamped
+    // per sample a quarter spacing apart cost more than the synthesis (0.23 -> 0.48 s).
+    probes_ = ProbeLattice(domain, std::max(step, exemplar_void_ / (dimension_ == 2 ? 6.0 : 4.0)), periodic.on);
 }
 
 // The distance to a wall; with wrap the faces of the bounding box are seams, not walls (where
