@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/parallel.hpp"
 #include "core/spatial_grid.hpp"
 
 namespace tessera::dynamic {
@@ -48,6 +47,11 @@ double sweep(Vec3* p, const Vec3* coarse, const std::vector<int>& element_of, in
     return worst;
 }
 
+struct SweepScratch {
+    core::SpatialGrid grid;
+    std::vector<Vec3> points, push;
+};
+
 }  // namespace
 
 double exemplar_contact_distance(const Animation& exemplar, double quantile) {
@@ -80,28 +84,11 @@ double exemplar_contact_distance(const Animation& exemplar, double quantile) {
 ContactReport keep_apart(std::vector<Vec3>& positions, const std::vector<Vec3>& coarse,
                          const std::vector<int>& element_of, int frames, int samples, int dimension,
                          double distance, double tolerance, int max_sweeps, int threads) {
-    ContactReport report;
-    if (!(distance > 0.0) || samples == 0) return report;
-    std::vector<double> left(frames, 0.0), found(frames, 0.0);
-    core::parallel_for(frames, threads, [&](int begin, int end, int) {
-        core::SpatialGrid grid;
-        std::vector<Vec3> points, push;
-        for (int f = begin; f < end; ++f) {
-            Vec3* p = positions.data() + static_cast<size_t>(f) * samples;
-            const Vec3* c = coarse.data() + static_cast<size_t>(f) * samples;
-            double worst = sweep(p, c, element_of, samples, dimension, distance, grid, points, push);
-            found[f] = worst;
-            for (int k = 1; k < max_sweeps && worst > tolerance * distance; ++k)
-                worst = sweep(p, c, element_of, samples, dimension, distance, grid, points, push);
-            left[f] = worst;
-        }
+    if (!(distance > 0.0) || samples == 0) return {};
+    return sweep_frames<SweepScratch>(frames, threads, tolerance * distance, max_sweeps, [&](int f, SweepScratch& s) {
+        return sweep(positions.data() + static_cast<size_t>(f) * samples, coarse.data() + static_cast<size_t>(f) * samples,
+                     element_of, samples, dimension, distance, s.grid, s.points, s.push);
     });
-    for (int f = 0; f < frames; ++f) {
-        report.bound_hits += left[f] > tolerance * distance;
-        report.worst_gap = std::max(report.worst_gap, left[f]);
-        report.first_gap = std::max(report.first_gap, found[f]);
-    }
-    return report;
 }
 
 }  // namespace tessera::dynamic

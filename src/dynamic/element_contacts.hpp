@@ -8,8 +8,10 @@
 // make elements touch or cross; the coarse motion the user gave is kept.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "tessera/animation.hpp"
 
 namespace tessera::dynamic {
@@ -25,6 +27,31 @@ struct ContactReport {
     double first_gap = 0.0;   // the largest shortfall found before any push (how far the
                               // positions given were from holding the contacts)
 };
+
+// Sweeps every frame (frames in parallel, each on its own: the same result for any thread
+// count) until its largest shortfall is within `tolerance_gap`, at most `max_sweeps` times:
+// `sweep(f, scratch)` runs one sweep of frame f and returns its largest shortfall; `Scratch`
+// is one per worker. The frames' first and last shortfalls make the report.
+template <class Scratch, class Sweep>
+ContactReport sweep_frames(int frames, int threads, double tolerance_gap, int max_sweeps, const Sweep& sweep) {
+    std::vector<double> left(frames, 0.0), found(frames, 0.0);
+    core::parallel_for(frames, threads, [&](int begin, int end, int) {
+        Scratch scratch;
+        for (int f = begin; f < end; ++f) {
+            double worst = sweep(f, scratch);
+            found[f] = worst;
+            for (int k = 1; k < max_sweeps && worst > tolerance_gap; ++k) worst = sweep(f, scratch);
+            left[f] = worst;
+        }
+    });
+    ContactReport report;
+    for (int f = 0; f < frames; ++f) {
+        report.bound_hits += left[f] > tolerance_gap;
+        report.worst_gap = std::max(report.worst_gap, left[f]);
+        report.first_gap = std::max(report.first_gap, found[f]);
+    }
+    return report;
+}
 
 // Pushes apart, frame by frame (frames in parallel; the same result for any thread count),
 // every pair of samples of different elements (`element_of[s]`) closer than

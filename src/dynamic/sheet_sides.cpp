@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/parallel.hpp"
 #include "core/spatial_grid.hpp"
 
 namespace tessera::dynamic {
@@ -99,27 +98,11 @@ std::vector<std::array<int, 3>> sheet_triangles(const TopologyGrid& grid) {
 ContactReport keep_sides(std::vector<Vec3>& positions, const std::vector<Vec3>& coarse,
                          const std::vector<std::array<int, 3>>& triangles, const std::vector<int>& element_of,
                          int frames, int samples, double distance, double tolerance, int max_sweeps, int threads) {
-    ContactReport report;
-    if (triangles.empty() || !(distance > 0.0)) return report;
-    std::vector<double> left(frames, 0.0), found(frames, 0.0);
-    core::parallel_for(frames, threads, [&](int begin, int end, int) {
-        Scratch scratch;
-        for (int f = begin; f < end; ++f) {
-            Vec3* p = positions.data() + static_cast<size_t>(f) * samples;
-            const Vec3* c = coarse.data() + static_cast<size_t>(f) * samples;
-            double worst = sweep(p, c, triangles, element_of, samples, distance, scratch);
-            found[f] = worst;
-            for (int k = 1; k < max_sweeps && worst > tolerance * distance; ++k)
-                worst = sweep(p, c, triangles, element_of, samples, distance, scratch);
-            left[f] = worst;
-        }
+    if (triangles.empty() || !(distance > 0.0)) return {};
+    return sweep_frames<Scratch>(frames, threads, tolerance * distance, max_sweeps, [&](int f, Scratch& scratch) {
+        return sweep(positions.data() + static_cast<size_t>(f) * samples, coarse.data() + static_cast<size_t>(f) * samples,
+                     triangles, element_of, samples, distance, scratch);
     });
-    for (int f = 0; f < frames; ++f) {
-        report.bound_hits += left[f] > tolerance * distance;
-        report.worst_gap = std::max(report.worst_gap, left[f]);
-        report.first_gap = std::max(report.first_gap, found[f]);
-    }
-    return report;
 }
 
 }  // namespace tessera::dynamic

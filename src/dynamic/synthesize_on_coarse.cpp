@@ -14,6 +14,7 @@
 #include "dynamic/detail_patches.hpp"
 #include "dynamic/element_contacts.hpp"
 #include "dynamic/sheet_sides.hpp"
+#include "dynamic/thread_sides.hpp"
 #include "dynamic/element_lengths.hpp"
 #include "dynamic/graph_exemplar.hpp"
 #include "dynamic/local_frames.hpp"
@@ -133,14 +134,15 @@ void decompose_into(const Animation& coarse, const std::vector<LocalFrame>& fram
     for (size_t k = 0; k < p.size(); ++k) out.detail[k] = frames[k].to_local(p[k] - coarse.positions[k]);
 }
 
-// Rest lengths, contacts between elements (element_contacts.hpp) and the sides of sheets
-// (sheet_sides.hpp), alternated so that all hold together (each pass of one disturbs the
+// Rest lengths, contacts between elements (element_contacts.hpp) and the sides of sheets and
+// threads (sheet_sides.hpp, thread_sides.hpp), alternated so that all hold together (each pass of one disturbs the
 // others a little): lengths last, so that threads and sheets end at their rest lengths.
 struct Constraints {
     const std::vector<std::vector<Edge>>& edges;
     const std::vector<Vec3>& coarse;
     std::vector<int> element_of;
     std::vector<std::array<int, 3>> sheet_triangles;  // 3D sheets only
+    std::vector<std::array<int, 2>> thread_segments;  // 3D threads only
     int frames = 0, samples = 0, dimension = 2, threads = 0;
     double contact = 0.0;
 
@@ -151,6 +153,12 @@ struct Constraints {
                                   contact_sweeps, threads);
             sides = keep_sides(p, coarse, sheet_triangles, element_of, frames, samples, contact, contact_tolerance,
                                contact_sweeps, threads);
+            const ContactReport threads_sides = keep_thread_sides(p, coarse, thread_segments, element_of, frames,
+                                                                  samples, contact, contact_tolerance, contact_sweeps,
+                                                                  threads);
+            sides.bound_hits += threads_sides.bound_hits;
+            sides.worst_gap = std::max(sides.worst_gap, threads_sides.worst_gap);
+            sides.first_gap = std::max(sides.first_gap, threads_sides.first_gap);
             // The last lengths pass left the contacts and sides within tolerance: nothing more to alternate.
             const double tolerance = contact_tolerance * contact;
             if (contacts.first_gap <= tolerance && sides.first_gap <= tolerance) break;
@@ -232,6 +240,7 @@ AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation
                                   coarse.positions,
                                   element_of_samples(coarse.structure),
                                   dimension == 3 ? sheet_triangles(out_grid) : std::vector<std::array<int, 3>>{},
+                                  dimension == 3 ? thread_segments(out_grid) : std::vector<std::array<int, 2>>{},
                                   out.frames,
                                   out.samples,
                                   coarse.structure.dimension,
@@ -270,7 +279,7 @@ AnimatedArrangement synthesize_on_coarse(const Animation& given, const Animation
                                      std::to_string(contacts.worst_gap) + ")");
     if (sides.bound_hits > 0)
         result.stats.notes.push_back(std::to_string(sides.bound_hits) + " frames stopped at the bound of " +
-                                     std::to_string(contact_sweeps) + " sweeps keeping samples off the sheets (largest " +
+                                     std::to_string(contact_sweeps) + " sweeps keeping sheets and threads off each other (largest " +
                                      "shortfall left " + std::to_string(sides.worst_gap) + ")");
     result.stats.notes.insert(result.stats.notes.begin(), graph_notes.begin(), graph_notes.end());
     result.stats.final_energy = result.stats.energy.empty() ? 0.0 : result.stats.energy.back();
