@@ -196,16 +196,27 @@ namespace {
 
 // A JSON file's domain replaced by a window that holds none of its elements is a wrong
 // window (another axis range, a typo): said here, not later as an empty exemplar or a domain
-// too small. A CSV's loader says the same of its points.
+// too small; one that leaves some out would make an exemplar with elements outside its own
+// domain. A CSV's loader says the same of its points.
 void require_elements_inside(const tessera::Exemplar& data, const std::string& path, const std::string& window,
                              const std::string& flag) {
+    size_t outside = 0;
+    const tessera::Element* first = nullptr;
     for (const tessera::Element& e : data.elements)
-        if (data.domain.inside(e.position)) return;
-    if (data.elements.empty()) return;  // the loader's own error says so
+        if (!data.domain.inside(e.position)) {
+            ++outside;
+            if (!first) first = &e;
+        }
+    if (outside == 0) return;  // (no elements: the loader's own error says so)
     std::ostringstream where;
-    where << "none of the " << data.elements.size() << " elements of " << path << " lies in " << flag << " " << window
-          << " (the first is at " << data.elements.front().position.x << "," << data.elements.front().position.y;
-    if (data.dimension == 3) where << "," << data.elements.front().position.z;
+    if (outside == data.elements.size())
+        where << "none of the " << data.elements.size() << " elements of " << path << " lies in " << flag << " "
+              << window << " (the first is at ";
+    else
+        where << outside << " of the " << data.elements.size() << " elements of " << path << " lie outside " << flag
+              << " " << window << " (the first at ";
+    where << first->position.x << "," << first->position.y;
+    if (data.dimension == 3) where << "," << first->position.z;
     where << ")";
     throw tessera::Error(tessera::ErrorKind::domain, where.str());
 }

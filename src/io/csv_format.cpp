@@ -12,6 +12,7 @@
 // Animations (a frame or t column) are assembled from the rows by animation_csv.cpp,
 // through the pieces exposed in io_util.hpp; parse_csv gives their frame 0.
 #include <algorithm>
+#include <sstream>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -382,12 +383,24 @@ Domain io_detail::csv_domain(const std::vector<Vec3>& points, int dimension, con
             throw Error(ErrorKind::domain, source + ": the input domain is " +
                                                std::to_string(options.input_domain->dimension()) +
                                                "D but the data are " + std::to_string(dimension) + "D");
-        // A window around none of the points is another axis range or a typo, not data.
-        const bool any_inside = std::any_of(points.begin(), points.end(),
-                                            [&](const Vec3& p) { return options.input_domain->inside(p); });
-        if (!points.empty() && !any_inside)
+        // A window around none of the points is another axis range or a typo, not data; one
+        // that leaves some out would make an exemplar with elements outside its own domain
+        // (neighbourhoods and densities measured against a window they do not fit).
+        const auto outside = std::count_if(points.begin(), points.end(),
+                                           [&](const Vec3& p) { return !options.input_domain->inside(p); });
+        if (!points.empty() && outside == static_cast<long>(points.size()))
             throw Error(ErrorKind::domain, source + ": none of its " + std::to_string(points.size()) +
                                                " points lies in the input domain");
+        if (outside > 0) {
+            const Vec3 first = *std::find_if(points.begin(), points.end(),
+                                             [&](const Vec3& p) { return !options.input_domain->inside(p); });
+            std::ostringstream text;
+            text << source << ": " << outside << " of its " << points.size()
+                 << " points lie outside the input domain (the first at " << first.x << "," << first.y;
+            if (dimension == 3) text << "," << first.z;
+            text << "); crop the file or give a window that holds them";
+            throw Error(ErrorKind::domain, text.str());
+        }
         return *options.input_domain;
     }
     Vec3 lo = points.front(), hi = lo;

@@ -185,6 +185,11 @@ TEST(IoCsv, InputDomainOverridesBoundingBox) {
     options.input_domain = Domain::box({0, 0, 0}, {1, 1, 0}, 2);
     expect_csv_error("x,y\n1,-0.5\n2,-0.7\n", ErrorKind::domain,
                      "data/pts.csv: none of its 2 points lies in the input domain", options);
+    // One that leaves some out too: its exemplar would have elements outside its own domain.
+    expect_csv_error("x,y\n0.5,0.5\n2,-0.7\n0.2,0.1\n", ErrorKind::domain,
+                     "data/pts.csv: 1 of its 3 points lie outside the input domain (the first at 2,-0.7)", options);
+    // A point on the window's edge is inside it.
+    EXPECT_EQ(parse_csv("x,y\n0,0\n1,1\n0.5,1\n", source, options).elements.size(), 3u);
 }
 
 TEST(IoCsv, RoundTripSingleSample2D) {
