@@ -26,6 +26,14 @@ struct ContactReport {
     double worst_gap = 0.0;   // the largest shortfall left, data units
     double first_gap = 0.0;   // the largest shortfall found before any push (how far the
                               // positions given were from holding the contacts)
+
+    // Both reports' bound hits and their worst shortfalls.
+    ContactReport& operator+=(const ContactReport& o) {
+        bound_hits += o.bound_hits;
+        worst_gap = std::max(worst_gap, o.worst_gap);
+        first_gap = std::max(first_gap, o.first_gap);
+        return *this;
+    }
 };
 
 // Sweeps every frame (frames in parallel, each on its own: the same result for any thread

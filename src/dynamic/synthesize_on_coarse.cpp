@@ -153,12 +153,8 @@ struct Constraints {
                                   contact_sweeps, threads);
             sides = keep_sides(p, coarse, sheet_triangles, element_of, frames, samples, contact, contact_tolerance,
                                contact_sweeps, threads);
-            const ContactReport threads_sides = keep_thread_sides(p, coarse, thread_segments, element_of, frames,
-                                                                  samples, contact, contact_tolerance, contact_sweeps,
-                                                                  threads);
-            sides.bound_hits += threads_sides.bound_hits;
-            sides.worst_gap = std::max(sides.worst_gap, threads_sides.worst_gap);
-            sides.first_gap = std::max(sides.first_gap, threads_sides.first_gap);
+            sides += keep_thread_sides(p, coarse, thread_segments, element_of, frames, samples, contact,
+                                       contact_tolerance, contact_sweeps, threads);
             // The last lengths pass left the contacts and sides within tolerance: nothing more to alternate.
             const double tolerance = contact_tolerance * contact;
             if (contacts.first_gap <= tolerance && sides.first_gap <= tolerance) break;

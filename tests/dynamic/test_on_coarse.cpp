@@ -8,10 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <numbers>
 #include <string>
 
+#include "analysis/motion_fixtures.hpp"
 #include "tessera/animation_io.hpp"
 #include "tessera/dynamic.hpp"
 #include "tessera/error.hpp"
@@ -60,29 +60,15 @@ DynamicOptions options(int threads = 2) {
 // mirror its neighbours'). With `amplitude` 0 the threads are straight and still (a coarse
 // motion).
 Animation parallel_threads(int count, double amplitude, double phase_step) {
-    Exemplar ex;
-    ex.dimension = 2;
-    const int type = ex.type_index("noodle");
-    ex.types[type].topology = ElementTopology::thread;
-    ex.types[type].rigid = false;
-    auto place = [&](int n, int i, int f) {
-        const double kink = amplitude * std::sin(2 * std::numbers::pi * (i / 5.0 + f * 0.1 / 1.6) + n * phase_step);
-        return Vec3{1.0 + 1.2 * n + kink, 4.5 - 0.25 * i, 0};
-    };
-    for (int n = 0; n < count; ++n) {
-        std::vector<Vec3> samples;
-        for (int i = 0; i < 16; ++i) samples.push_back(place(n, i, 0));
-        ex.elements[ex.add_element(type, samples)].id = n;
-    }
-    ex.domain = Domain::box({0, 0, 0}, {1.2 * count + 1, 5, 0}, 2);
-    Animation a;
-    a.structure = ex;
-    for (int f = 0; f < 40; ++f) {
-        std::vector<Vec3> p;
-        for (int n = 0; n < count; ++n)
-            for (int i = 0; i < 16; ++i) p.push_back(place(n, i, f));
-        a.add_frame(0.1 * f, p);
-    }
+    Animation a = motion_test::animation_of(
+        "noodle", ElementTopology::thread, 0, count, 16, 40,
+        [=](int n, int i, int f) {
+            const double kink =
+                amplitude * std::sin(2 * std::numbers::pi * (i / 5.0 + f * 0.1 / 1.6) + n * phase_step);
+            return Vec3{1.0 + 1.2 * n + kink, 4.5 - 0.25 * i, 0};
+        },
+        Domain::box({0, 0, 0}, {1.2 * count + 1, 5, 0}, 2));
+    a.structure.types[0].rigid = false;
     return a;
 }
 
@@ -245,59 +231,22 @@ int frames_with_sheets_crossing(const Animation& a) {
 // other in any frame.
 TEST(DynamicOnCoarse, StackedSheetsNeverPassThroughEachOther) {
     const Animation exemplar = example("paper_3d");
-    Exemplar pair;
-    pair.dimension = 3;
-    const int paper = pair.type_index("paper");
-    pair.types[paper].topology = ElementTopology::sheet;
-    pair.types[paper].sheet_columns = 6;
-    const auto place = [](int sheet, int k, int f) {
-        return Vec3{1.5 + 0.2 * (k % 6) + 0.1 * sheet, 1.5 + 0.2 * (k / 6), 3.0 + 0.02 * sheet - 0.03 * f};
-    };
-    for (int sheet = 0; sheet < 2; ++sheet) {
-        std::vector<Vec3> p;
-        for (int k = 0; k < 36; ++k) p.push_back(place(sheet, k, 0));
-        pair.add_element(paper, p);
-        pair.elements.back().id = static_cast<std::uint64_t>(sheet);
-    }
-    pair.update_positions();
-    pair.domain = Domain::box({0, 0, 0}, {4, 4, 4}, 3);
-    Animation coarse;
-    coarse.structure = pair;
-    for (int f = 0; f < 40; ++f) {
-        std::vector<Vec3> p;
-        for (int sheet = 0; sheet < 2; ++sheet)
-            for (int k = 0; k < 36; ++k) p.push_back(place(sheet, k, f));
-        coarse.add_frame(0.1 * f, p);
-    }
+    const Animation coarse = motion_test::animation_of(
+        "paper", ElementTopology::sheet, 6, 2, 36, 40,
+        [](int sheet, int k, int f) {
+            return Vec3{1.5 + 0.2 * (k % 6) + 0.1 * sheet, 1.5 + 0.2 * (k / 6), 3.0 + 0.02 * sheet - 0.03 * f};
+        },
+        Domain::box({0, 0, 0}, {4, 4, 4}, 3));
     ASSERT_EQ(frames_with_sheets_crossing(coarse), 0);
     const AnimatedArrangement out = synthesize_on_coarse(exemplar, coarse, options());
     EXPECT_GT(rms_offset(out, coarse), 0.01);  // they do flutter
     EXPECT_EQ(frames_with_sheets_crossing(out), 0);
 }
 
-// `count` threads of 16 samples 0.25 apart placed by `at(thread, sample, frame)`, 40 frames.
-Animation threads_3d(int count, const std::function<Vec3(int, int, int)>& at) {
-    Exemplar data;
-    data.dimension = 3;
-    const int hair = data.type_index("hair");
-    data.types[hair].topology = ElementTopology::thread;
-    for (int e = 0; e < count; ++e) {
-        std::vector<Vec3> p;
-        for (int k = 0; k < 16; ++k) p.push_back(at(e, k, 0));
-        data.add_element(hair, p);
-        data.elements.back().id = static_cast<std::uint64_t>(e);
-    }
-    data.update_positions();
-    data.domain = Domain::box({0, 0, 0}, {6, 6, 6}, 3);
-    Animation a;
-    a.structure = data;
-    for (int f = 0; f < 40; ++f) {
-        std::vector<Vec3> p;
-        for (int e = 0; e < count; ++e)
-            for (int k = 0; k < 16; ++k) p.push_back(at(e, k, f));
-        a.add_frame(0.1 * f, p);
-    }
-    return a;
+// `count` threads of 16 samples placed by `at(thread, sample, frame)`, 40 frames, in 3D.
+Animation threads_3d(int count, const motion_test::Motion& at) {
+    return motion_test::animation_of("hair", ElementTopology::thread, 0, count, 16, 40, at,
+                                     Domain::box({0, 0, 0}, {6, 6, 6}, 3));
 }
 
 // Frames in which a segment of one thread of `a` passes through a segment of another: the
